@@ -1,0 +1,3 @@
+from edsconv.cli import main
+
+main()

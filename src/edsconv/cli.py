@@ -24,8 +24,9 @@ def cli() -> None:
 
 
 def main() -> None:
+    """Entry point: every subcommand returns its exit code (see the module docstring)."""
     try:
-        cli.main(standalone_mode=False)
+        code = cli.main(standalone_mode=False)
     except click.exceptions.Exit as exit_:
         sys.exit(exit_.exit_code)
     except click.ClickException as error:
@@ -33,3 +34,4 @@ def main() -> None:
         sys.exit(EXIT_USAGE)
     except click.exceptions.Abort:
         sys.exit(EXIT_USAGE)
+    sys.exit(code if isinstance(code, int) else EXIT_CLEAN)

@@ -449,6 +449,8 @@ ASSEM_DESCRIPTOR_BITS = _descriptor("Assembly descriptor", "C.21", "C.4.1.4.8", 
 ))
 
 _C23 = "C.4.1.4.9.2"
+# restored: Figure C.15 prints the trigger of a "Listen Only" ProxyConnect as
+# 0x010100002 (nine hex digits, too many for a DWORD); it is 0x01010002.
 _CLASSES = ("null", "duplicate detect", "acknowledged", "verified", "non-blocking",
             "non-blocking, fragmenting", "multicast, fragmenting")
 _TRIGGERS = ("cyclic", "change of state", "application")
@@ -677,9 +679,7 @@ def _fields(clause: str, table: str, *rows) -> tuple[FieldSpec, ...]:
 
 def _single(section, keyword, name, eds_type, presence, clause, table, description, **kw) -> EntrySpec:
     """An entry with one field whose name is the entry name (Tables C.6, C.8, C.10)."""
-    field_kw = {k: kw.pop(k) for k in ("choices", "bits", "value_range", "note_field") if k in kw}
-    if "note_field" in field_kw:
-        field_kw["note"] = field_kw.pop("note_field")
+    field_kw = {k: kw.pop(k) for k in ("choices", "bits", "value_range") if k in kw}
     return EntrySpec(keyword, False, section, _fields(clause, table, (name, eds_type, presence, field_kw)),
                      presence, clause, table, description, **kw)
 
@@ -785,8 +785,10 @@ PARAM_FIELDS = _fields(_P, "C.13",
     ("International Engineering Units", "STRINGI", O),
     ("International Help String", "STRINGI", O),
 )
-#: Table C.18: the ParamN field numbers reserved for numeric data types.
-NUMERIC_ONLY_PARAM_FIELDS = frozenset(f.number for f in PARAM_FIELDS if f.note == _NUM["note"])
+#: Table C.18: the ParamN fields reserved for numeric data types, by name and number.
+NUMERIC_ONLY_FIELD_NAMES = ("Scaling Multiplier", "Scaling Divider", "Scaling Base", "Scaling Offset",
+                            "Multiplier Link", "Divisor Link", "Base Link", "Offset Link", "Decimal Precision")
+NUMERIC_ONLY_PARAM_FIELDS = frozenset(f.number for f in PARAM_FIELDS if f.name in NUMERIC_ONLY_FIELD_NAMES)
 
 ENUM_FIELDS = _fields(_P, "",
     ("Enum Value", "Integer", R, {"repeats": True}),
@@ -810,6 +812,7 @@ PARAMS_ENTRIES = (
         ("Minimum Value", "ParamDataType", R), ("Maximum Value", "ParamDataType", R),
         ("Default Value", "ParamDataType", R)), O, _MOD, "",
               "Values added to ProxyParamN's minimum, maximum and default", pairs_with="ProxyParam"),
+    # restored: the seed puts ProxyEnum / ProxiedEnum in a "[Param] section": [Params].
     EntrySpec("ProxyEnum", True, "Params", ENUM_FIELDS, O, _MOD, "",
               "Enumeration of ProxyParamN", pairs_with="ProxyParam"),
     EntrySpec("ProxiedEnum", True, "Params", ENUM_FIELDS, O, _MOD, "",

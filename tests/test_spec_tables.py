@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import re
+from pathlib import Path
 
 import pytest
 from hypothesis import given
@@ -400,9 +402,33 @@ def test_keyword_patterns():
     assert not T.is_vendor_keyword("Chassis")
     assert T.split_numbered("ProxyParamSizeAdder12") == ("ProxyParamSizeAdder", 12)
     assert T.split_numbered("CfgAssembly") == ("CfgAssembly", None)
-    import re
     member = re.compile(T.FIELD_VALUE_KINDS["MemberKeyword"])
     assert all(member.fullmatch(k) for k in (*T.MEMBER_REFERENCE_KEYWORDS, "ExternalID2"))
     assert not member.fullmatch("InputSlotMask2")
     assert re.fullmatch(T.FIELD_VALUE_KINDS["ParamRef"], "Param65535")
     assert not re.fullmatch(T.FIELD_VALUE_KINDS["ParamRef"], "Param0")
+
+
+# --- real files ----------------------------------------------------------------------
+
+CORPUS = Path(__file__).resolve().parents[1].parent / "shared" / "corpus" / "real"
+
+
+def _corpus_connection_masks():
+    found = set()
+    for path in sorted(CORPUS.glob("*.eds")):
+        text = re.sub(r"\$[^\n]*", "", path.read_text(encoding="latin-1"))
+        for m in re.finditer(r"\b(?:Connection|ProxyConnect)\d+\s*=\s*(0x[0-9A-Fa-f]+)\s*,\s*(0x[0-9A-Fa-f]+)", text):
+            found.add((int(m.group(1), 16), int(m.group(2), 16)))
+    return found
+
+
+@pytest.mark.skipif(not CORPUS.is_dir(), reason="../shared/corpus not present")
+def test_real_connection_masks_use_only_assigned_bits():
+    masks = _corpus_connection_masks()
+    assert len(masks) >= 10
+    for trigger, params in masks:
+        assert T.reserved_bits_set(trigger, T.TRIGGER_TRANSPORT_BITS) == 0, hex(trigger)
+        assert T.exclusive_violations(trigger, T.TRIGGER_TRANSPORT_BITS) == [], hex(trigger)
+        assert T.reserved_bits_set(params, T.CONNECTION_PARAMETER_BITS) == 0, hex(params)
+        assert any(T.TRIGGER_TRANSPORT_BITS.field(f"class {n}").extract(trigger) for n in range(7)), hex(trigger)

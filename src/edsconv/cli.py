@@ -8,7 +8,9 @@ Exit codes, shared by every subcommand:
 
 from __future__ import annotations
 
+import json
 import sys
+from pathlib import Path
 
 import click
 
@@ -21,6 +23,37 @@ EXIT_USAGE = 2
 @click.version_option(package_name="edsconv")
 def cli() -> None:
     """Parse, check and convert CIP Electronic Data Sheets (EDS) and ISO 15745-4 XML profiles."""
+
+
+
+
+@cli.command("parse")
+@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text",
+              help="text: one diagnostic per line; json: the syntax model with its diagnostics.")
+def parse_command(files: tuple[Path, ...], output_format: str) -> int:
+    """Read EDS files and report their syntax diagnostics (or print the model as JSON)."""
+    from edsconv.reader import load
+    from edsconv.syntax import to_json
+
+    exit_code = EXIT_CLEAN
+    models = []
+    for path in files:
+        try:
+            eds = load(path)
+        except OSError as error:
+            click.echo(f"{path}: cannot read: {error.strerror or error}", err=True)
+            return EXIT_USAGE
+        if eds.has_errors:
+            exit_code = EXIT_FINDINGS
+        if output_format == "json":
+            models.append(to_json(eds))
+        else:
+            for diagnostic in eds.diagnostics:
+                click.echo(diagnostic.format())
+    if output_format == "json":
+        click.echo(json.dumps(models[0] if len(models) == 1 else models, indent=2))
+    return exit_code
 
 
 def main() -> None:

@@ -1,0 +1,63 @@
+"""Regular expressions built from the grammar's own terminals.
+
+The LALR parser sees coarse tokens (a whole run of fields is one RUN token);
+the reader splits them with these expressions, which are assembled from the
+terminal definitions of grammar/eds.lark so that the lexical rules live in one
+place.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from dataclasses import dataclass
+
+from lark.load_grammar import load_grammar
+
+from edsconv.resources import data_dir
+
+#: The order in which a scalar is classified; the grammar's SCALAR accepts the union.
+SCALAR_KINDS = ("REAL_WORD", "DATE", "TIME", "HEX", "BINARY", "REAL", "INTEGER", "WORD", "WILDCARD")
+
+
+@dataclass(frozen=True, slots=True)
+class Lexicon:
+    #: one field of a RUN: groups (comment, string, scalar, comma)
+    run_piece: re.Pattern[str]
+    #: the parts and comments of a concatenated string
+    string_piece: re.Pattern[str]
+    #: one escape sequence of Table C.4
+    escape: re.Pattern[str]
+    #: the keyword at the start of an ENTRY_START token
+    entry_keyword: re.Pattern[str]
+    #: a whole scalar, with one named group per kind of SCALAR_KINDS
+    scalar_kind: re.Pattern[str]
+
+
+def grammar_text() -> str:
+    return (data_dir("grammar") / "eds.lark").read_text(encoding="utf-8")
+
+
+@functools.cache
+def lexicon() -> Lexicon:
+    wanted = {"STRING", "STRING_PART", "ESCAPE", "KEYWORD", "SCALAR", *SCALAR_KINDS}
+    grammar, _ = load_grammar(grammar_text(), "eds.lark", [], False)
+    terminals, _, _ = grammar.compile(["start"], wanted)
+    pattern = {t.name: t.pattern.to_regexp() for t in terminals if t.name in wanted}
+    blank = r"[ \t\n\f\v]*"
+    run_piece = re.compile(
+        rf"{blank}(?:(\$[^\n]*)|(?:({pattern['STRING']})|({pattern['SCALAR']}))?{blank}(,)?)")
+    scalar_kind = re.compile("|".join(f"(?P<{name}>{pattern[name]})" for name in SCALAR_KINDS))
+    return Lexicon(
+        run_piece=run_piece,
+        string_piece=re.compile(rf"({pattern['STRING_PART']})|(\$[^\n]*)"),
+        escape=re.compile(pattern["ESCAPE"]),
+        entry_keyword=re.compile(pattern["KEYWORD"]),
+        scalar_kind=scalar_kind,
+    )
+
+
+def scalar_kind(raw: str) -> str:
+    """The SCALAR_KINDS name of a scalar spelling, or "" when it is no scalar."""
+    match = lexicon().scalar_kind.fullmatch(raw)
+    return match.lastgroup if match else ""

@@ -1,0 +1,437 @@
+"""Bytes -> parse tree (grammar/eds.lark) -> syntax model with positions.
+
+The grammar is compiled once per process (and cached on disk by Lark). Lark
+applies :class:`_Builder` while it parses, so entries become model objects as
+they are reduced and no parse tree is kept. A syntax error never stops the
+read: a missing ``;`` is inserted and reported; any other error is reported,
+the text up to the next ``;`` or statement start is kept verbatim as
+:class:`~edsconv.syntax.Unparsed`, and parsing resumes there.
+"""
+
+from __future__ import annotations
+
+import bisect
+import re
+import threading
+from pathlib import Path
+
+from lark import Lark, Token, Transformer
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+
+from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.lexicon import grammar_text, lexicon
+from edsconv.source import LineIndex, decode
+from edsconv.syntax import (
+    Comment,
+    EdsFile,
+    Entry,
+    Field,
+    Group,
+    Scalar,
+    Section,
+    String,
+    Unparsed,
+)
+
+SYNTAX_ERROR = rule("EDS001", Severity.ERROR, "C.4.1.2.2", "Text that does not follow the EDS syntax")
+MISSING_SEMICOLON = rule("EDS002", Severity.ERROR, "C.4.1.2.2.8", "An entry does not end with ';'")
+BAD_ESCAPE = rule("EDS003", Severity.ERROR, "C.4.1.3.3.5", "A string holds an escape sequence not in Table C.4")
+UNICODE_ESCAPE_IN_ASCII = rule(
+    "EDS004", Severity.ERROR, "C.4.1.3.3.5", r"A \u escape stands in an 8-bit string (valid only after L)")
+NOT_ASCII = rule("EDS005", Severity.WARNING, "C.4.1.3.2", "The file holds characters outside ASCII")
+SECTION_NAME = rule("EDS006", Severity.WARNING, "C.4.1.2.2.3",
+                    "A section name uses characters the 2003 keyword rules do not allow")
+DUPLICATE_SECTION = rule("EDS008", Severity.ERROR, "C.4.1.2.2.5", "A section appears more than once",
+                         import_blocking=True)
+DUPLICATE_ENTRY = rule("EDS009", Severity.ERROR, "C.4.1.2.2.9", "An entry keyword appears twice in one section",
+                       import_blocking=True)
+CANOPEN_EDS = rule("EDS010", Severity.ERROR, "C.4.1.1", "The file is a CANopen EDS (CiA 306), not a CIP EDS")
+ENTRY_OUTSIDE_SECTION = rule("EDS011", Severity.ERROR, "C.4.1.2.2.8", "An entry stands before the first section")
+MISSING_COMMA = rule("EDS012", Severity.ERROR, "C.4.1.2.2.12", "Two fields are not separated by a comma")
+UNTERMINATED_STRING = rule("EDS013", Severity.ERROR, "C.4.1.3.3", "A string has no closing quote on its line")
+TOO_MANY_ERRORS = rule("EDS014", Severity.ERROR, "C.4.1.2.2", "So many syntax errors that reading stopped")
+NO_SECTIONS = rule("EDS015", Severity.ERROR, "C.4.1.2.2.4", "The file has no sections", import_blocking=True)
+LONG_PREFIX_ON_CONTINUATION = rule(
+    "EDS016", Severity.WARNING, "C.4.1.3.3.4", "Only the first part of a concatenated string may carry the L prefix")
+
+#: Syntax errors reported per file before the reader gives up.
+MAX_SYNTAX_ERRORS = 100
+
+_COMMENT = re.compile(r"\$[^\n]*")
+_SECTION_NAME = re.compile(r"[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
+_WHITESPACE_AND_COMMENTS = re.compile(r"(?:[ \t\n\f\v\x1a]|\$[^\n]*)*")
+_CANOPEN_SECTION = re.compile(r"^[ \t]*\[(?:FileInfo|DeviceInfo|MandatoryObjects|[0-9A-Fa-f]{4})\][ \t]*$",
+                              re.MULTILINE | re.IGNORECASE)
+#: How much of the file start is read to tell a CANopen EDS from a CIP EDS.
+_SNIFF_LENGTH = 65536
+_CIP_FILE_SECTION = re.compile(r"^[ \t]*\[File\]", re.MULTILINE)
+# Where parsing resumes after an error: after the next ';', or at a line that
+# starts a section or an entry. Strings and comments are stepped over whole.
+_RESYNC = re.compile(r'L?"(?:[^"\\\n]|\\.)*"?|\$[^\n]*|;|\n(?=[ \t]*(?:\[|[A-Za-z0-9_]+[ \t]*=))')
+
+#: Words a device engineer understands, for the terminals the parser expected.
+_EXPECTED_WORDS = {
+    "SEMICOLON": "';'",
+    "LBRACE": "'{'",
+    "RBRACE": "'}'",
+    "RUN": "a field value or ','",
+    "ENTRY_START": "an entry 'Keyword ='",
+    "SECTION": "a section header '[Name]'",
+    "$END": "the end of the file",
+}
+
+
+_local = threading.local()
+
+
+def _parser() -> tuple[Lark, _Builder]:
+    """One Lark parser and its builder per thread: Lark binds both at construction."""
+    cached = getattr(_local, "parser", None)
+    if cached is None:
+        builder = _Builder()
+        lark = Lark(
+            grammar_text(),
+            parser="lalr",
+            lexer="contextual",
+            transformer=builder,
+            lexer_callbacks={"TRIVIA": builder.on_trivia},
+            cache=True,
+        )
+        cached = _local.parser = (lark, builder)
+    return cached
+
+
+class _Builder(Transformer):
+    """Builds the syntax model while Lark reduces rules (inline transformer)."""
+
+    def reset(self, text: str, path: str | None, lines: LineIndex) -> None:
+        self.text = text
+        self.path = path
+        self.lines = lines
+        self.base = 0
+        self.lexicon = lexicon()
+        self.eds = EdsFile(path=path)
+        self.section: Section | None = None
+        self.seen_sections: dict[str, Section] = {}
+        self.seen_entries: dict[str, Entry] = {}
+        # (offset, Comment) for every comment, attached to nodes at the end
+        self.comments: list[tuple[int, Comment]] = []
+        # (start, end of its last line, node, every field in document order) per statement
+        self.statements: list[tuple[int, int, Section | Entry, list[int], list[Field]]] = []
+        self.last_end = 0
+        self.unparsed_ranges: list[tuple[int, int]] = []
+
+    # --- diagnostics and positions -------------------------------------------------
+    def report(self, rule_, message: str, offset: int) -> None:
+        line, column = self.lines.position(offset)
+        self.eds.diagnostics.append(Diagnostic.of(rule_, message, line, column, self.path))
+
+    def on_trivia(self, token: Token) -> None:
+        if "$" in token.value:
+            start = self.base + token.start_pos
+            for comment in _COMMENT.finditer(token.value):
+                self.add_comment(start + comment.start(), comment.group())
+
+    def add_comment(self, offset: int, raw: str) -> None:
+        self.comments.append((offset, Comment(raw[1:], offset, self.lines)))
+
+    # --- rules ---------------------------------------------------------------------
+    def start(self, children: list) -> None:
+        return None
+
+    def section(self, children: list[Token]) -> None:
+        token = children[0]
+        start = self.base + token.start_pos
+        name = token.value[1:-1]
+        section = Section(name=name.strip(), offset=start, source=self.lines)
+        if not _SECTION_NAME.fullmatch(name):
+            self.report(SECTION_NAME, f"section name [{name}] uses characters or spacing outside the keyword "
+                        "rules of ISO 15745-4 (letters, digits, '_', single inner spaces)", start)
+        first = self.seen_sections.get(section.name)
+        if first is not None:
+            self.report(DUPLICATE_SECTION, f"section [{section.name}] appears again (first on line {first.line}); "
+                        "both are kept, but tools read only one", start)
+        else:
+            self.seen_sections[section.name] = section
+        self.eds.sections.append(section)
+        self.section = section
+        self.seen_entries = {}
+        self._record_statement(start, self.base + token.end_pos, section, [])
+
+    def entry(self, children: list) -> None:
+        start_token, semicolon = children[0], children[-1]
+        start = self.base + start_token.start_pos
+        keyword = self.lexicon.entry_keyword.match(start_token.value).group()
+        end = self.base + semicolon.end_pos
+        flat: list[Field] = []
+        fields = self.fields(children[1:-1], self.base + semicolon.start_pos, flat)
+        entry = Entry(keyword, fields, offset=start, end_offset=end, source=self.lines)
+        section = self.section
+        if section is None:
+            self.report(ENTRY_OUTSIDE_SECTION, f"entry {keyword} stands before the first section header", start)
+            section = self.eds.preamble = self.eds.preamble or Section(name="", offset=start, source=self.lines)
+        first = self.seen_entries.get(keyword)
+        if first is not None:
+            self.report(DUPLICATE_ENTRY, f"{keyword} appears again in [{section.name}] (first on line "
+                        f"{first.line}); tools reject a file with a duplicated entry", start)
+        else:
+            self.seen_entries[keyword] = entry
+        section.entries.append(entry)
+        self._record_statement(start, end, entry, flat)
+
+    def group(self, children: list) -> tuple[Group, int, int, list]:
+        open_brace, close_brace = children[0], children[-1]
+        # The fields are built by the enclosing entry, in document order.
+        return Group([]), self.base + open_brace.start_pos, self.base + close_brace.start_pos, children[1:-1]
+
+    def _record_statement(self, start: int, end: int, node, flat: list[Field]) -> None:
+        line_end = self.text.find("\n", end)
+        self.statements.append((start, len(self.text) if line_end == -1 else line_end, node, flat))
+        self.last_end = end
+
+    # --- fields --------------------------------------------------------------------
+    def fields(self, content: list, closer: int, flat: list[Field]) -> list[Field]:
+        """Turn the RUN tokens and groups of an entry or group into fields.
+
+        ``closer`` is the offset of the ';' or '}' that ends the list: an empty
+        last field is placed there. ``flat`` receives every field of the entry
+        in document order, for comment attachment.
+        """
+        fields: list[Field] = []
+        current: Field | None = None
+        lines = self.lines
+        for child in content:
+            if isinstance(child, Token):
+                current = self.scan_run(child, fields, current, flat)
+                continue
+            group, start, close, inner = child
+            if current is not None:
+                self.report(MISSING_COMMA, "a ',' is missing before this '{'", start)
+                fields.append(current)
+            current = Field(group, [], start, lines)
+            flat.append(current)
+            group.fields = self.fields(inner, close, flat)
+        if current is None:
+            current = Field(None, [], closer, lines)
+            flat.append(current)
+        fields.append(current)
+        return fields
+
+    def scan_run(self, token: Token, fields: list[Field], current: Field | None, flat: list[Field]) -> Field | None:
+        """Split one RUN token into fields; returns the field still open at its end.
+
+        This loop runs once per field of the file: keep it lean.
+        """
+        lines = self.lines
+        base = self.base
+        for piece in self.lexicon.run_piece.finditer(self.text, base + token.start_pos, base + token.end_pos):
+            comment, string, scalar, comma = piece.groups()
+            if comment is not None:
+                self.add_comment(piece.start(1), comment)
+                continue
+            if string is not None or scalar is not None:
+                if current is not None:
+                    # The grammar puts a comma between items; stay safe all the same.
+                    fields.append(current)
+                if string is not None:
+                    offset = piece.start(2)
+                    current = Field(self.string(string, offset), [], offset, lines)
+                else:
+                    current = Field(Scalar(scalar), [], piece.start(3), lines)
+                flat.append(current)
+            if comma is not None:
+                if current is None:
+                    current = Field(None, [], piece.start(4), lines)
+                    flat.append(current)
+                fields.append(current)
+                current = None
+        return current
+
+    def string(self, raw: str, offset: int) -> String:
+        if '"' in raw[1:-1] or "$" in raw:
+            parts = []
+            for piece in self.lexicon.string_piece.finditer(raw):
+                if piece.group(2) is not None:
+                    self.add_comment(offset + piece.start(), piece.group())
+                else:
+                    parts.append(piece.group())
+                    if len(parts) > 1 and piece.group().startswith("L"):
+                        self.report(LONG_PREFIX_ON_CONTINUATION, "only the first part of a concatenated string "
+                                    "may carry the L prefix", offset + piece.start())
+        else:
+            parts = [raw]
+        if "\\" in raw:
+            self.check_escapes(raw, offset, parts[0].startswith("L"))
+        return String(tuple(parts))
+
+    def check_escapes(self, raw: str, offset: int, unicode: bool) -> None:
+        for escape in re.finditer(r"\\.", raw):
+            at = offset + escape.start()
+            if not self.lexicon.escape.match(raw, escape.start()):
+                self.report(BAD_ESCAPE, f"escape sequence {escape.group()!r} is not defined in Table C.4; the "
+                            "string is rejected (write '\\\\' for a backslash)", at)
+            elif escape.group() == "\\u" and not unicode:
+                self.report(UNICODE_ESCAPE_IN_ASCII, "\\u escapes are valid only in L\"...\" (UNICODE) "
+                            "strings", at)
+
+    # --- after the parse -----------------------------------------------------------
+    def attach_comments(self) -> None:
+        statements = self.statements
+        statement_starts = [s[0] for s in statements]
+        leading: dict[int, list[Comment]] = {}
+        self.comments.sort(key=lambda item: item[0])
+        for offset, comment in self.comments:
+            if any(low <= offset < high for low, high in self.unparsed_ranges):
+                continue
+            index = bisect.bisect_right(statement_starts, offset) - 1
+            if index >= 0 and offset < statements[index][1]:
+                _, _, node, flat = statements[index]
+                field_index = bisect.bisect_right(flat, offset, key=_offset_of) - 1
+                (flat[field_index].comments if field_index >= 0 else node.comments).append(comment)
+            elif index + 1 < len(statements):
+                leading.setdefault(index + 1, []).append(comment)
+            else:
+                self.eds.trailing_comments.append(comment)
+        for index, comments in leading.items():
+            statements[index][2].leading_comments.extend(comments)
+
+    def keep_unparsed(self, start: int, end: int) -> None:
+        start = _WHITESPACE_AND_COMMENTS.match(self.text, start, end).end()
+        if start >= end:
+            return
+        self.unparsed_ranges.append((start, end))
+        section = self.section
+        if section is None:
+            section = self.eds.preamble = self.eds.preamble or Section(name="", offset=start, source=self.lines)
+        section.unparsed.append((len(section.entries), Unparsed(self.text[start:end].rstrip(), start, self.lines)))
+        self.last_end = end
+
+
+def _offset_of(field: Field) -> int:
+    return field.offset
+
+
+def _describe(token: Token) -> str:
+    if token.type == "$END":
+        return "the end of the file"
+    value = token.value.strip()
+    if len(value) > 30:
+        value = value[:27] + "..."
+    return repr(value)
+
+
+def _expected(expected: set[str]) -> str:
+    words = sorted({_EXPECTED_WORDS.get(name, name) for name in expected})
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
+
+
+def parse(source: str | bytes, filename: str | None = None) -> EdsFile:
+    """Read an EDS from text or bytes; never raises for bad input, reports diagnostics."""
+    if isinstance(source, str):
+        source = source.encode("utf-8")
+    decoded = decode(source)
+    text = decoded.text
+    lines = LineIndex(text)
+    lark, builder = _parser()
+    builder.reset(text, filename, lines)
+    eds = builder.eds
+    eds.encoding, eds.newline = decoded.encoding, decoded.newline
+    if decoded.first_non_ascii_line is not None:
+        eds.diagnostics.append(Diagnostic.of(
+            NOT_ASCII, f"the file is not plain ASCII (read as {decoded.encoding}); the first character outside "
+            f"ASCII is on line {decoded.first_non_ascii_line}", decoded.first_non_ascii_line, 1, filename))
+    head = text[:_SNIFF_LENGTH]
+    if _CANOPEN_SECTION.search(head) and not _CIP_FILE_SECTION.search(head):
+        builder.report(CANOPEN_EDS, "this is a CANopen EDS (CiA 306: [FileInfo], [DeviceInfo], object "
+                       "sections such as [1000]); edsconv reads CIP EDS files (ISO 15745-4 Annex C.4)", 0)
+        return eds
+    _parse_with_recovery(lark, builder, text)
+    builder.attach_comments()
+    if not eds.sections and not eds.has_errors:
+        eds.diagnostics.append(Diagnostic.of(NO_SECTIONS, "the file holds no [Section]", 1, 1, filename))
+    return eds
+
+
+def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
+    errors = 0
+    resume = 0
+
+    def insert_missing_semicolon(error: UnexpectedInput) -> bool:
+        if not (isinstance(error, UnexpectedToken) and "SEMICOLON" in error.expected
+                and error.token.type in ("ENTRY_START", "SECTION", "$END")):
+            return False
+        stack = error.interactive_parser.parser_state.value_stack
+        last = stack[-1] if stack else None
+        if isinstance(last, Token):
+            after = builder.base + last.end_pos
+        elif isinstance(last, tuple):
+            after = last[2] + 1
+        else:
+            after = builder.base + (error.token.start_pos or len(text) - builder.base)
+        builder.report(MISSING_SEMICOLON, "the entry is not ended by ';' before "
+                       f"{_describe(error.token)}; a ';' is assumed here", after)
+        # Zero-width, at the end of the last field, so positions stay truthful.
+        error.interactive_parser.feed_token(
+            Token("SEMICOLON", ";", start_pos=after - builder.base, end_pos=after - builder.base))
+        if error.token.type == "$END":
+            error.interactive_parser.feed_eof(error.token)
+        else:
+            error.interactive_parser.feed_token(error.token)
+        return True
+
+    while True:
+        builder.base = resume
+        try:
+            lark.parse(text[resume:] if resume else text, on_error=insert_missing_semicolon)
+            return
+        except UnexpectedInput as error:
+            errors += 1
+            position = _error_offset(error, text, resume)
+            builder.report(*_error_message(error, text, position), position)
+            if errors >= MAX_SYNTAX_ERRORS:
+                builder.report(TOO_MANY_ERRORS, f"{errors} syntax errors; the rest of the file is not read",
+                               position)
+                builder.keep_unparsed(builder.last_end, len(text))
+                return
+            resume = _resync(text, position)
+            builder.keep_unparsed(builder.last_end, resume)
+
+
+def _error_offset(error: UnexpectedInput, text: str, base: int) -> int:
+    if isinstance(error, UnexpectedCharacters):
+        return base + error.pos_in_stream
+    if isinstance(error, UnexpectedToken) and error.token.start_pos is not None:
+        return base + error.token.start_pos
+    return len(text)
+
+
+def _error_message(error: UnexpectedInput, text: str, position: int):
+    if isinstance(error, UnexpectedCharacters):
+        character = text[position]
+        if character == '"':
+            return UNTERMINATED_STRING, "this string has no closing '\"' on its line"
+        allowed = getattr(error, "allowed", None) or set()
+        line_text = text[position:text.find("\n", position) if "\n" in text[position:] else len(text)]
+        snippet = line_text.strip()[:30]
+        return SYNTAX_ERROR, (f"unexpected {snippet!r}: expected {_expected(allowed)}" if allowed
+                              else f"unexpected {snippet!r}")
+    if isinstance(error, UnexpectedEOF):
+        return SYNTAX_ERROR, f"the file ends early: expected {_expected(set(error.expected))}"
+    assert isinstance(error, UnexpectedToken)
+    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(set(error.expected))}"
+
+
+def _resync(text: str, position: int) -> int:
+    for match in _RESYNC.finditer(text, position):
+        token = match.group()
+        if token == ";":
+            return match.end()
+        if token == "\n" and match.start() > position:
+            return match.end()
+    return len(text)
+
+
+def load(path: str | Path) -> EdsFile:
+    """Read an EDS file from disk (see :func:`parse`)."""
+    path = Path(path)
+    return parse(path.read_bytes(), str(path))

@@ -1,0 +1,74 @@
+"""Bytes to text: encoding detection, line ends, and offset -> line/column.
+
+An EDS is ASCII (C.4.1.3.2), but real files carry UTF-8 (with or without BOM)
+and Windows-1252 / Latin-1 text. We accept all of them and report one warning
+that names the first offending line, as real configuration tools do.
+"""
+
+from __future__ import annotations
+
+import bisect
+import codecs
+import re
+from dataclasses import dataclass
+
+_NON_ASCII = re.compile(rb"[\x80-\xff]")
+_LINE_START = re.compile(r"\n")
+
+
+@dataclass(frozen=True, slots=True)
+class DecodedSource:
+    text: str
+    #: "ascii", "utf-8", "utf-8-sig" or "cp1252"/"latin-1"
+    encoding: str
+    #: "\n", "\r\n" or "\r": what the file used first, so a writer can keep it.
+    newline: str
+    #: 1-based line of the first byte outside ASCII, or None for a pure ASCII file.
+    first_non_ascii_line: int | None
+
+
+def decode(data: bytes) -> DecodedSource:
+    """Decode EDS bytes and normalise every line end to ``\\n``."""
+    encoding = "ascii"
+    if data.startswith(codecs.BOM_UTF8):
+        data, encoding = data[len(codecs.BOM_UTF8):], "utf-8-sig"
+    first = _NON_ASCII.search(data)
+    first_line = data.count(b"\n", 0, first.start()) + 1 if first else None
+    if first is None:
+        text = data.decode("ascii")
+    else:
+        try:
+            text = data.decode("utf-8")
+            encoding = "utf-8-sig" if encoding == "utf-8-sig" else "utf-8"
+        except UnicodeDecodeError:
+            # cp1252 leaves five bytes undefined; Latin-1 maps every byte.
+            try:
+                text, encoding = data.decode("cp1252"), "cp1252"
+            except UnicodeDecodeError:
+                text, encoding = data.decode("latin-1"), "latin-1"
+    newline = "\n"
+    crlf = text.find("\r")
+    if crlf != -1:
+        newline = "\r\n" if text.startswith("\r\n", crlf) else "\r"
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+    return DecodedSource(text, encoding, newline, first_line)
+
+
+class LineIndex:
+    """Maps character offsets of a text to 1-based line and column numbers."""
+
+    __slots__ = ("_starts", "_text")
+
+    def __init__(self, text: str) -> None:
+        self._text = text
+        self._starts = [0]
+        self._starts.extend(match.end() for match in _LINE_START.finditer(text))
+
+    def position(self, offset: int) -> tuple[int, int]:
+        line = bisect.bisect_right(self._starts, offset)
+        return line, offset - self._starts[line - 1] + 1
+
+    def starts_line(self, offset: int) -> bool:
+        """True when only white space stands between the line start and ``offset``."""
+        line_start = self._starts[bisect.bisect_right(self._starts, offset) - 1]
+        return not self._text[line_start:offset].strip()

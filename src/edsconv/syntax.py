@@ -1,0 +1,337 @@
+"""The syntax model of an EDS: file -> sections -> entries -> fields -> values.
+
+It is lossless for everything that has meaning: values keep their spelling
+(hex stays hex), comments stay with the element they belong to, duplicate
+sections and entries are all kept. Positions (1-based line and column) are kept
+on every node but take no part in equality, so a model written out and read
+back compares equal to the original.
+
+Comment ownership, one rule for every level: a comment inside an entry belongs
+to the last field (nested fields included) that starts before it, or to the
+entry itself when no field does; a comment on a line of its own between
+statements belongs to the next statement as a leading comment.
+"""
+
+from __future__ import annotations
+
+import enum
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from edsconv.diagnostics import Diagnostic
+from edsconv.lexicon import scalar_kind
+from edsconv.source import LineIndex
+
+
+class Located:
+    """A node's place in its file, turned into line and column only when asked.
+
+    Nodes store a character offset and a reference to the file's line index;
+    most positions are never looked at, so none are computed while reading.
+    Nodes built in code (not read from a file) have line and column 0.
+    """
+
+    __slots__ = ()
+
+    @property
+    def line(self) -> int:
+        return self.source.position(self.offset)[0] if self.source else 0
+
+    @property
+    def column(self) -> int:
+        return self.source.position(self.offset)[1] if self.source else 0
+
+
+class ValueKind(enum.StrEnum):
+    """Lexical kind of a value, named after the grammar terminals."""
+
+    STRING = "STRING"
+    REAL_WORD = "REAL_WORD"
+    DATE = "DATE"
+    TIME = "TIME"
+    HEX = "HEX"
+    BINARY = "BINARY"
+    REAL = "REAL"
+    INTEGER = "INTEGER"
+    WORD = "WORD"
+    WILDCARD = "WILDCARD"
+    GROUP = "GROUP"
+
+
+@dataclass(slots=True)
+class Comment(Located):
+    """A ``$`` comment; ``text`` is everything after the ``$`` up to the line end."""
+
+    text: str
+    offset: int = field(default=0, compare=False)
+    source: LineIndex | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def own_line(self) -> bool:
+        """True when nothing but white space precedes it on its line."""
+        return bool(self.source) and self.source.starts_line(self.offset)
+
+
+@dataclass(slots=True)
+class Scalar:
+    """A number, date, time, bare keyword or ``*``, spelled as in the file."""
+
+    raw: str
+
+    @property
+    def kind(self) -> ValueKind:
+        """The lexical kind, classified on demand (most values are never asked)."""
+        kind = scalar_kind(self.raw)
+        if not kind:
+            raise ValueError(f"{self.raw!r} is not an EDS scalar")
+        return ValueKind(kind)
+
+
+_ESCAPES = {"\\": "\\", "n": "\n", "t": "\t", "v": "\v", "b": "\b", "r": "\r", "f": "\f", "a": "\a", '"': '"', "'": "'"}
+_ESCAPE_SEQUENCE = re.compile(r"\\(x[0-9A-Fa-f]{2}|u[0-9A-Fa-f]{4}|.)")
+
+
+def _unescape(match: re.Match[str]) -> str:
+    body = match.group(1)
+    if len(body) > 1:
+        return chr(int(body[1:], 16))
+    return _ESCAPES.get(body, body)
+
+
+@dataclass(slots=True)
+class String:
+    """An EDS_Char_Array (C.4.1.3.3): one or more adjacent quoted parts.
+
+    ``parts`` keep their quotes; only the first may carry the ``L`` prefix that
+    makes the whole string UNICODE.
+    """
+
+    parts: tuple[str, ...]
+
+    kind = ValueKind.STRING
+
+    @property
+    def unicode(self) -> bool:
+        return self.parts[0].startswith("L")
+
+    @property
+    def raw(self) -> str:
+        return " ".join(self.parts)
+
+    @property
+    def text(self) -> str:
+        """The characters the string stands for, escapes translated (Table C.4)."""
+        inner = "".join(part[part.index('"') + 1:-1] for part in self.parts)
+        if "\\" not in inner:
+            return inner
+        return _ESCAPE_SEQUENCE.sub(_unescape, inner)
+
+
+@dataclass(slots=True)
+class Group:
+    """A brace group ``{ ... }`` (C.4.1.2.14): a list of fields, nested to any depth."""
+
+    fields: list[Field]
+
+    kind = ValueKind.GROUP
+
+
+Value = Scalar | String | Group
+
+
+@dataclass(slots=True)
+class Field(Located):
+    """One comma-separated field; ``value`` is None for an empty (omitted) field.
+
+    An empty field is located at the comma, ``;`` or ``}`` that ends it.
+    """
+
+    value: Value | None
+    comments: list[Comment] = field(default_factory=list)
+    offset: int = field(default=0, compare=False)
+    source: LineIndex | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def is_empty(self) -> bool:
+        return self.value is None
+
+    @property
+    def raw(self) -> str | None:
+        """The spelling of a scalar or string field; None for empty fields and groups."""
+        value = self.value
+        if value is None or isinstance(value, Group):
+            return None
+        return value.raw
+
+
+@dataclass(slots=True)
+class Entry(Located):
+    """``Keyword = field, field, ... ;`` (C.4.1.2.2.8)."""
+
+    keyword: str
+    fields: list[Field]
+    #: comments between ``=`` and the first field
+    comments: list[Comment] = field(default_factory=list)
+    leading_comments: list[Comment] = field(default_factory=list)
+    offset: int = field(default=0, compare=False)
+    #: offset just after the closing ``;``
+    end_offset: int = field(default=0, compare=False)
+    source: LineIndex | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def end_line(self) -> int:
+        return self.source.position(self.end_offset)[0] if self.source else 0
+
+    @property
+    def end_column(self) -> int:
+        return self.source.position(self.end_offset)[1] if self.source else 0
+
+    def walk_fields(self) -> Iterator[Field]:
+        """Every field in document order, fields inside brace groups included."""
+        stack = list(reversed(self.fields))
+        while stack:
+            current = stack.pop()
+            yield current
+            if isinstance(current.value, Group):
+                stack.extend(reversed(current.value.fields))
+
+
+@dataclass(slots=True)
+class Unparsed(Located):
+    """Text that could not be parsed, kept verbatim so that nothing is lost."""
+
+    text: str
+    offset: int = field(default=0, compare=False)
+    source: LineIndex | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class Section(Located):
+    """``[Name]`` and its entries, in file order."""
+
+    name: str
+    entries: list[Entry] = field(default_factory=list)
+    #: comments on the header line, after ``]``
+    comments: list[Comment] = field(default_factory=list)
+    leading_comments: list[Comment] = field(default_factory=list)
+    #: (index into ``entries`` before which it stood, text) for unparsable statements
+    unparsed: list[tuple[int, Unparsed]] = field(default_factory=list)
+    offset: int = field(default=0, compare=False)
+    source: LineIndex | None = field(default=None, compare=False, repr=False)
+
+    def entry(self, keyword: str) -> Entry | None:
+        """The first entry with this keyword (duplicates are reported, and kept)."""
+        for entry in self.entries:
+            if entry.keyword == keyword:
+                return entry
+        return None
+
+
+@dataclass(slots=True)
+class EdsFile:
+    sections: list[Section] = field(default_factory=list)
+    #: entries that stand before the first section header (an error, kept)
+    preamble: Section | None = None
+    #: comments after the last statement
+    trailing_comments: list[Comment] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list, compare=False)
+    path: str | None = field(default=None, compare=False)
+    encoding: str = field(default="ascii", compare=False)
+    newline: str = field(default="\n", compare=False)
+
+    def section(self, name: str) -> Section | None:
+        """The first section with this name (case as written in the spec)."""
+        for section in self.sections:
+            if section.name == name:
+                return section
+        return None
+
+    @property
+    def has_errors(self) -> bool:
+        from edsconv.diagnostics import has_errors
+
+        return has_errors(self.diagnostics)
+
+
+@dataclass(frozen=True, slots=True)
+class StringIMember:
+    """One language of a STRINGI value (C.4.1.3.5)."""
+
+    language: str
+    type_code: str
+    charset: str
+    text: str
+
+
+def stringi_members(group: Group) -> list[StringIMember]:
+    """Split a STRINGI brace group ``{n, {"eng",0xD0,4,"..."}, ...}`` into its languages.
+
+    Raises ValueError when the group is not shaped like a STRINGI.
+    """
+    if not group.fields or not isinstance(group.fields[0].value, Scalar):
+        raise ValueError("a STRINGI starts with the number of languages")
+    members = []
+    for member_field in group.fields[1:]:
+        member = member_field.value
+        if not isinstance(member, Group) or len(member.fields) != 4:
+            raise ValueError("each STRINGI language is a group of four fields")
+        language, type_code, charset, content = (f.value for f in member.fields)
+        if not isinstance(language, String) or not isinstance(content, String):
+            raise ValueError("a STRINGI language code and its content are strings")
+        if not isinstance(type_code, Scalar) or not isinstance(charset, Scalar):
+            raise ValueError("a STRINGI data type and character set are numbers")
+        members.append(StringIMember(language.text, type_code.raw, charset.raw, content.text))
+    declared = group.fields[0].value.raw
+    if not declared.isdigit() or int(declared) != len(members):
+        raise ValueError(f"the STRINGI declares {declared} languages but lists {len(members)}")
+    return members
+
+
+def _comments_json(comments: list[Comment]) -> list[str]:
+    return [comment.text for comment in comments]
+
+
+def _value_json(value: Value | None) -> dict | None:
+    if value is None:
+        return None
+    if isinstance(value, Group):
+        return {"kind": "GROUP", "fields": [_field_json(f) for f in value.fields]}
+    if isinstance(value, String):
+        return {"kind": "STRING", "raw": value.raw, "text": value.text, "unicode": value.unicode}
+    return {"kind": str(value.kind), "raw": value.raw}
+
+
+def _field_json(item: Field) -> dict:
+    return {"line": item.line, "column": item.column, "value": _value_json(item.value),
+            "comments": _comments_json(item.comments)}
+
+
+def _entry_json(entry: Entry) -> dict:
+    return {
+        "keyword": entry.keyword, "line": entry.line, "column": entry.column,
+        "end_line": entry.end_line, "end_column": entry.end_column,
+        "comments": _comments_json(entry.comments), "leading_comments": _comments_json(entry.leading_comments),
+        "fields": [_field_json(f) for f in entry.fields],
+    }
+
+
+def _section_json(section: Section) -> dict:
+    return {
+        "name": section.name, "line": section.line, "column": section.column,
+        "comments": _comments_json(section.comments), "leading_comments": _comments_json(section.leading_comments),
+        "entries": [_entry_json(e) for e in section.entries],
+        "unparsed": [{"before_entry": index, "line": item.line, "text": item.text} for index, item in section.unparsed],
+    }
+
+
+def to_json(eds: EdsFile) -> dict:
+    """The syntax model as plain JSON data (``edsconv parse --format json``)."""
+    return {
+        "path": eds.path,
+        "encoding": eds.encoding,
+        "preamble": _section_json(eds.preamble) if eds.preamble else None,
+        "sections": [_section_json(s) for s in eds.sections],
+        "trailing_comments": _comments_json(eds.trailing_comments),
+        "diagnostics": [d.as_dict() for d in eds.diagnostics],
+    }

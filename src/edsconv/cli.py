@@ -25,6 +25,8 @@ def cli() -> None:
     """Parse, check and convert CIP Electronic Data Sheets (EDS) and ISO 15745-4 XML profiles."""
 
 
+from edsconv.validate import validate_command
+cli.add_command(validate_command)
 
 
 @cli.command("parse")

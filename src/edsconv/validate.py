@@ -1,0 +1,165 @@
+"""``edsconv validate``: check ISO 15745-4 XML profiles against the restored schemas.
+
+The profile kind is read from the header (ProfileClassID and
+ISO15745Reference/ProfileTechnology) and picks the schema; ``--schema`` forces
+one. Every problem becomes a :class:`~edsconv.diagnostics.Diagnostic` whose
+message ends with the XPath of the offending element.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import click
+from lxml import etree
+
+from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
+from edsconv.xmlsafe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
+
+NOT_WELL_FORMED = rule("XML001", Severity.ERROR, "XML 1.0", "the file is not well-formed XML")
+UNSAFE_XML = rule("XML002", Severity.ERROR, "ISO 15745-1",
+                  "the file declares entities (billion laughs, XXE); refused without expanding them")
+SCHEMA_VIOLATION = rule("XML003", Severity.ERROR, "ISO 15745-4",
+                        "the profile does not conform to the schema of its kind")
+UNKNOWN_KIND = rule("XML004", Severity.ERROR, "ISO 15745-4",
+                    "the header's ProfileClassID and ProfileTechnology name no known profile kind")
+NOT_VALIDATED = rule("XML005", Severity.INFO, "ISO 15745-1",
+                     "a recognised ISO 15745 container (POWERLINK XDD) for which edsconv has no schema")
+TOO_LARGE = rule("XML006", Severity.ERROR, "edsconv",
+                 "the file exceeds the input size limit and was not read")
+
+POWERLINK_XDD = kind_named("powerlink-xdd")
+
+# (ProfileClassID, ProfileTechnology in lower case) -> kind. CIP and EtherNet/IP
+# both lead to the CIP schemas; each fixes its own technology, so a profile
+# with the other spelling gets a precise schema error instead of "unknown".
+_KIND_BY_HEADER = {
+    ("Device", "cip"): "cip-device",
+    ("Device", "ethernet/ip"): "cip-device",
+    ("Device", "eds"): "eds-device-wrapper",
+    ("CommunicationNetwork", "ethernet/ip"): "ethernetip-commnet",
+    ("CommunicationNetwork", "cip"): "ethernetip-commnet",
+    ("CommunicationNetwork", "eds"): "eds-commnet-wrapper",
+    ("Device", "ads-net"): "adsnet-device",
+    ("CommunicationNetwork", "ads-net"): "adsnet-commnet",
+    ("Device", "fl-net"): "flnet-device",
+    ("CommunicationNetwork", "fl-net"): "flnet-commnet",
+}
+
+
+@dataclass(slots=True)
+class FileReport:
+    path: str
+    kind: ProfileKind | None = None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    def as_dict(self) -> dict:
+        return {
+            "path": self.path,
+            "profile": self.kind.name if self.kind else None,
+            "schema": self.kind.xsd if self.kind else None,
+            "diagnostics": [d.as_dict() for d in self.diagnostics],
+        }
+
+
+def _header_text(root: etree._Element, *steps: str) -> str:
+    query = "./" + "/".join(f"*[local-name()='{step}']" for step in steps) + "/text()"
+    found = root.xpath(query)
+    return found[0].strip() if found else ""
+
+
+def detect_kind(root: etree._Element) -> ProfileKind | None:
+    """The profile kind the document's root and header declare, or ``None``."""
+    root_name = etree.QName(root).localname
+    if root_name == "ISO15745ProfileContainer":
+        return POWERLINK_XDD
+    if root_name != "ISO15745Profile":
+        return None
+    profile_class = _header_text(root, "ProfileHeader", "ProfileClassID")
+    technology = _header_text(root, "ProfileHeader", "ISO15745Reference", "ProfileTechnology").lower()
+    name = _KIND_BY_HEADER.get((profile_class, technology))
+    return kind_named(name) if name else None
+
+
+def validate_file(path: Path, forced: ProfileKind | None = None) -> FileReport:
+    """Validate one file; ``OSError`` propagates when it cannot be read."""
+    report = FileReport(str(path), forced)
+    try:
+        document = read_xml(path)
+    except XmlError as error:
+        report.diagnostics.append(Diagnostic.of(_XML_ERROR_RULES[type(error)], error.message,
+                                                error.line, error.column, report.path))
+        return report
+    root = document.tree.getroot()
+    report.kind = forced or detect_kind(root)
+    if report.kind is None:
+        found = (f"ProfileClassID {_header_text(root, 'ProfileHeader', 'ProfileClassID')!r}, ProfileTechnology "
+                 f"{_header_text(root, 'ProfileHeader', 'ISO15745Reference', 'ProfileTechnology')!r}")
+        report.diagnostics.append(Diagnostic.of(
+            UNKNOWN_KIND, f"unknown profile kind ({found}); choose a schema with --schema",
+            *document.position(root), report.path))
+    elif report.kind.xsd is None:
+        report.diagnostics.append(Diagnostic.of(
+            NOT_VALIDATED, "POWERLINK XDD profile container recognised; not validated (no schema for it)",
+            *document.position(root), report.path))
+    else:
+        report.diagnostics.extend(_schema_diagnostics(document, report))
+    return report
+
+
+_XML_ERROR_RULES = {XmlSyntaxError: NOT_WELL_FORMED, UnsafeXmlError: UNSAFE_XML, XmlTooLargeError: TOO_LARGE}
+
+
+def _schema_diagnostics(document: XmlDocument, report: FileReport) -> Iterable[Diagnostic]:
+    kind = report.kind
+    for error in load_schema(kind.xsd).iter_errors(document.tree):
+        line, column = document.position(error.elem) if error.elem is not None else (0, 0)
+        reason = (error.reason or error.message).strip().rstrip(".")
+        diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column, report.path)
+        diagnostic.clause = f"ISO 15745-4 {kind.clause}"
+        yield diagnostic
+
+
+def summarise(reports: list[FileReport]) -> dict:
+    diagnostics = [d for report in reports for d in report.diagnostics]
+    return {
+        "files": len(reports),
+        "errors": sum(d.severity is Severity.ERROR for d in diagnostics),
+        "warnings": sum(d.severity is Severity.WARNING for d in diagnostics),
+    }
+
+
+_SCHEMA_CHOICES = [kind.name for kind in PROFILE_KINDS if kind.xsd] + [kind.xsd for kind in PROFILE_KINDS if kind.xsd]
+
+
+@click.command("validate")
+@click.argument("files", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option("--schema", "schema_name", type=click.Choice(_SCHEMA_CHOICES),
+              help="Validate against this profile kind or schema file instead of the one the header names.")
+@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
+def validate_command(files: tuple[Path, ...], schema_name: str | None, output_format: str) -> int:
+    """Validate ISO 15745-4 XML profiles (EtherNet/IP, EDS wrappers, ADS-net, FL-net) against their schemas."""
+    # cli.py imports this module to register the command, so its names are imported at call time.
+    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
+
+    forced = kind_named(schema_name) if schema_name else None
+    reports = []
+    for path in files:
+        try:
+            reports.append(validate_file(path, forced))
+        except OSError as error:
+            click.echo(f"{path}: cannot read: {error.strerror or error}", err=True)
+            return EXIT_USAGE
+    if output_format == "json":
+        json.dump({"files": [r.as_dict() for r in reports], "summary": summarise(reports)}, sys.stdout, indent=2)
+        click.echo()
+    else:
+        for report in reports:
+            for diagnostic in report.diagnostics:
+                click.echo(diagnostic.format())
+    return EXIT_FINDINGS if any(has_errors(r.diagnostics) for r in reports) else EXIT_CLEAN

@@ -9,9 +9,15 @@ place.
 from __future__ import annotations
 
 import functools
+import hashlib
+import json
+import os
 import re
+import tempfile
 from dataclasses import dataclass
+from pathlib import Path
 
+import lark
 from lark.load_grammar import load_grammar
 
 from edsconv.resources import data_dir
@@ -38,12 +44,36 @@ def grammar_text() -> str:
     return (data_dir("grammar") / "eds.lark").read_text(encoding="utf-8")
 
 
+_WANTED = ("STRING", "STRING_PART", "ESCAPE", "KEYWORD", "SCALAR", *SCALAR_KINDS)
+
+
+def _terminal_patterns() -> dict[str, str]:
+    """The regexes of the wanted terminals; cached on disk like Lark's own tables.
+
+    Compiling the grammar costs ~40 ms, a large share of a short run's start-up.
+    """
+    text = grammar_text()
+    key = hashlib.sha256(f"{lark.__version__}\n{text}".encode()).hexdigest()[:20]
+    cache = Path(tempfile.gettempdir()) / f".edsconv_lexicon_{key}.json"
+    try:
+        return json.loads(cache.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        pass
+    grammar, _ = load_grammar(text, "eds.lark", [], False)
+    terminals, _, _ = grammar.compile(["start"], set(_WANTED))
+    patterns = {t.name: t.pattern.to_regexp() for t in terminals if t.name in _WANTED}
+    try:
+        with tempfile.NamedTemporaryFile("w", dir=cache.parent, delete=False, encoding="utf-8") as temporary:
+            json.dump(patterns, temporary)
+        os.replace(temporary.name, cache)
+    except OSError:
+        pass  # a read-only temp dir only costs start-up time
+    return patterns
+
+
 @functools.cache
 def lexicon() -> Lexicon:
-    wanted = {"STRING", "STRING_PART", "ESCAPE", "KEYWORD", "SCALAR", *SCALAR_KINDS}
-    grammar, _ = load_grammar(grammar_text(), "eds.lark", [], False)
-    terminals, _, _ = grammar.compile(["start"], wanted)
-    pattern = {t.name: t.pattern.to_regexp() for t in terminals if t.name in wanted}
+    pattern = _terminal_patterns()
     blank = r"[ \t\n\f\v]*"
     run_piece = re.compile(
         rf"{blank}(?:(\$[^\n]*)|(?:({pattern['STRING']})|({pattern['SCALAR']}))?{blank}(,)?)")

@@ -10,6 +10,7 @@ with :class:`UnsafeXmlError` rather than parsed: no ISO 15745 profile needs one.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -99,7 +100,9 @@ def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
         root = etree.fromstring(data, parser)
     except etree.XMLSyntaxError as error:
         line, column = error.position
-        raise XmlSyntaxError(f"not well-formed: {error.msg}", line, column) from None
+        # libxml2 repeats the position at the end of its message; the diagnostic carries it already.
+        message = re.sub(r", line \d+, column \d+$", "", error.msg)
+        raise XmlSyntaxError(f"not well-formed: {message}", line, column) from None
     tree = root.getroottree()
     dtd = tree.docinfo.internalDTD
     if dtd is not None and any(True for _ in dtd.iterentities()):

@@ -80,3 +80,7 @@ def test_every_other_instance_reports_its_expected_message(path):
 def test_every_profile_kind_has_invalid_variants():
     for kind in VALIDATED_KINDS:
         assert list((CORPUS / kind.name).glob("invalid-*.xml")), kind.name
+
+
+def test_schemas_are_loaded_once_per_process():
+    assert load_schema("ADS-net_Device_Profile.xsd") is load_schema("ADS-net_Device_Profile.xsd")

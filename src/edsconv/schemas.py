@@ -9,10 +9,12 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass
-
-import xmlschema
+from typing import TYPE_CHECKING
 
 from edsconv.resources import data_dir
+
+if TYPE_CHECKING:
+    import xmlschema
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,6 +54,9 @@ def kind_named(name: str) -> ProfileKind:
 @functools.cache
 def load_schema(xsd: str) -> xmlschema.XMLSchemaBase:
     """Load a schema once per process; no network access (schemas and includes are local files)."""
+    # Imported here: it costs 0.13 s, which every other edsconv command would pay at start-up.
+    import xmlschema
+
     kind = _BY_XSD[xsd]
     schema_class = xmlschema.XMLSchema11 if kind.xsd_version == "1.1" else xmlschema.XMLSchema10
     return schema_class(str(data_dir("schemas") / xsd), allow="local", defuse="always")

@@ -1,0 +1,117 @@
+"""``edsconv validate``: kind detection, output formats, exit codes, start-up time."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from lxml import etree
+
+from edsconv.cli import cli
+from edsconv.validate import detect_kind
+
+REPO = Path(__file__).resolve().parents[1]
+CORPUS = REPO / "corpus" / "xml"
+
+
+def run(*args: str):
+    return CliRunner().invoke(cli, ["validate", *args], standalone_mode=False)
+
+
+def header(profile_class: str, technology: str) -> etree._Element:
+    return etree.fromstring(
+        f"<ISO15745Profile><ProfileHeader><ProfileClassID>{profile_class}</ProfileClassID><ISO15745Reference>"
+        f"<ProfileTechnology> {technology} </ProfileTechnology></ISO15745Reference></ProfileHeader></ISO15745Profile>")
+
+
+@pytest.mark.parametrize(("profile_class", "technology", "kind"), [
+    ("Device", "CIP", "cip-device"),
+    ("Device", "EDS", "eds-device-wrapper"),
+    ("CommunicationNetwork", "EtherNet/IP", "ethernetip-commnet"),
+    ("CommunicationNetwork", "EDS", "eds-commnet-wrapper"),
+    ("Device", "ADS-net", "adsnet-device"),
+    ("CommunicationNetwork", "ADS-net", "adsnet-commnet"),
+    ("Device", "FL-net", "flnet-device"),
+    ("CommunicationNetwork", "fl-net", "flnet-commnet"),
+])
+def test_kind_detected_from_header(profile_class, technology, kind):
+    assert detect_kind(header(profile_class, technology)).name == kind
+
+
+def test_unknown_header_and_foreign_roots_have_no_kind():
+    assert detect_kind(header("Device", "PROFINET")) is None
+    assert detect_kind(etree.fromstring("<html/>")) is None
+
+
+def test_clean_files_print_nothing_and_exit_0():
+    result = run(str(CORPUS / "adsnet-device" / "valid-complete.xml"), str(CORPUS / "cip-device" / "valid-chassis.xml"))
+    assert (result.return_value, result.output) == (0, "")
+
+
+def test_problems_are_reported_as_path_line_col_code_message_xpath_clause():
+    path = CORPUS / "flnet-device" / "invalid-node-number.xml"
+    result = run(str(path))
+    assert result.return_value == 1
+    assert result.output == (
+        f"{path}:40:11: XML003 value has to be greater or equal than 1 "
+        "(at /ISO15745Profile/ProfileBody/DeviceManager/DeviceManager-Attributes/CommuServiceManager/DM-NodeNumber) "
+        "[ISO 15745-4 B.1.5]\n")
+
+
+def test_json_output_lists_files_with_kind_schema_and_summary():
+    valid = CORPUS / "ethernetip-commnet" / "valid-complete.xml"
+    invalid = CORPUS / "ethernetip-commnet" / "invalid-interface-type.xml"
+    result = run("--format", "json", str(valid), str(invalid))
+    report = json.loads(result.output)
+    assert result.return_value == 1
+    assert [(f["profile"], f["schema"], len(f["diagnostics"])) for f in report["files"]] == [
+        ("ethernetip-commnet", "ENet_CommNet_Profile.xsd", 0), ("ethernetip-commnet", "ENet_CommNet_Profile.xsd", 1)]
+    assert report["files"][1]["diagnostics"][0]["code"] == "XML003"
+    assert report["summary"] == {"files": 2, "errors": 1, "warnings": 0}
+
+
+def test_schema_option_forces_a_schema():
+    path = CORPUS / "adsnet-device" / "valid-complete.xml"
+    result = run("--schema", "FL-net_Device_Profile.xsd", "--format", "json", str(path))
+    report = json.loads(result.output)["files"][0]
+    assert (result.return_value, report["profile"], report["schema"]) == (1, "flnet-device", "FL-net_Device_Profile.xsd")
+    assert run("--schema", "adsnet-device", str(path)).return_value == 0
+
+
+def test_powerlink_xdd_is_recognised_as_info_and_exits_0():
+    result = run(str(CORPUS / "powerlink-xdd" / "container.xml"))
+    assert result.return_value == 0
+    assert "XML005 POWERLINK XDD profile container recognised; not validated" in result.output
+
+
+def test_unsafe_and_malformed_files_are_diagnostics_not_tracebacks():
+    result = run(str(CORPUS / "security" / "xxe-file.xml"), str(CORPUS / "broken" / "not-well-formed.xml"))
+    assert result.return_value == 1 and result.exception is None
+    assert "xxe-file.xml:4:3: XML002 DOCTYPE declares entities" in result.output
+    assert "not-well-formed.xml:6:19: XML001 not well-formed" in result.output
+
+
+def test_missing_file_exits_2():
+    completed = subprocess.run([sys.executable, "-m", "edsconv", "validate", "no-such-file.xml"],
+                               capture_output=True, text=True, env=_env())
+    assert completed.returncode == 2
+    assert "no-such-file.xml" in completed.stderr
+
+
+def _env() -> dict[str, str]:
+    return {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "src"), os.environ.get("PYTHONPATH", "")])}
+
+
+def test_validating_a_small_file_starts_quickly():
+    """Schemas are loaded once and only for the kind at hand: a whole run stays well under a second."""
+    path = CORPUS / "eds-commnet-wrapper" / "valid-complete.xml"
+    started = time.perf_counter()
+    completed = subprocess.run([sys.executable, "-m", "edsconv", "validate", str(path)], env=_env())
+    assert completed.returncode == 0
+    assert time.perf_counter() - started < 2.0  # generous for loaded CI machines; measured ~0.4 s

@@ -8,6 +8,7 @@ Exit codes, shared by every subcommand:
 
 from __future__ import annotations
 
+import importlib
 import json
 import sys
 from pathlib import Path
@@ -19,14 +20,35 @@ EXIT_FINDINGS = 1
 EXIT_USAGE = 2
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+
+class LazyGroup(click.Group):
+    """A group whose commands named in :attr:`lazy` are imported only when they run (or help lists them).
+
+    Start-up stays short: ``edsconv parse`` does not pay for xmlschema, rich or
+    the process pool that other commands use.
+    """
+
+    #: command name -> "module:attribute" of its click command
+    lazy = {
+        "validate": "edsconv.validate:validate_command",
+        "lint": "edsconv.lint:lint_command",
+        "rules": "edsconv.lint:rules_command",
+    }
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted({*super().list_commands(ctx), *self.lazy})
+
+    def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
+        if name in self.lazy and name not in self.commands:
+            module, _, attribute = self.lazy[name].partition(":")
+            self.add_command(getattr(importlib.import_module(module), attribute), name)
+        return super().get_command(ctx, name)
+
+
+@click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(package_name="edsconv")
 def cli() -> None:
     """Parse, check and convert CIP Electronic Data Sheets (EDS) and ISO 15745-4 XML profiles."""
-
-
-from edsconv.validate import validate_command
-cli.add_command(validate_command)
 
 
 @cli.command("parse")

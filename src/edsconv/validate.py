@@ -8,7 +8,6 @@ message ends with the XPath of the offending element.
 
 from __future__ import annotations
 
-import json
 import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -18,6 +17,7 @@ import click
 from lxml import etree
 
 from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.report import format_json
 from edsconv.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
 from edsconv.xmlsafe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
 
@@ -125,15 +125,6 @@ def _schema_diagnostics(document: XmlDocument, report: FileReport) -> Iterable[D
         yield diagnostic
 
 
-def summarise(reports: list[FileReport]) -> dict:
-    diagnostics = [d for report in reports for d in report.diagnostics]
-    return {
-        "files": len(reports),
-        "errors": sum(d.severity is Severity.ERROR for d in diagnostics),
-        "warnings": sum(d.severity is Severity.WARNING for d in diagnostics),
-    }
-
-
 _SCHEMA_CHOICES = [kind.name for kind in PROFILE_KINDS if kind.xsd] + [kind.xsd for kind in PROFILE_KINDS if kind.xsd]
 
 
@@ -156,8 +147,7 @@ def validate_command(files: tuple[Path, ...], schema_name: str | None, output_fo
             click.echo(f"{path}: cannot read: {error.strerror or error}", err=True)
             return EXIT_USAGE
     if output_format == "json":
-        json.dump({"files": [r.as_dict() for r in reports], "summary": summarise(reports)}, sys.stdout, indent=2)
-        click.echo()
+        sys.stdout.write(format_json(reports))
     else:
         for report in reports:
             for diagnostic in report.diagnostics:

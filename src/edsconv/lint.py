@@ -1,0 +1,226 @@
+"""``edsconv lint`` and ``edsconv rules``.
+
+:func:`lint_paths` finds the EDS files below the given paths, checks each one
+(:func:`lint_file`) on every core when there are enough of them, and returns
+one :class:`~edsconv.report.FileReport` per file in a stable order. A file that
+cannot be read, or on which edsconv itself fails, gives an ``EDS000``
+diagnostic: one broken file never stops the run.
+
+Heavy imports (rich, concurrent.futures) happen inside the functions that need
+them: the command line imports this module only when ``lint`` or ``rules`` runs.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import traceback
+from collections.abc import Iterable, Sequence
+from pathlib import Path
+
+import click
+
+from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.reader import load
+from edsconv.report import FORMATTERS, FileReport, all_rules
+from edsconv.syntax import EdsFile
+
+INTERNAL_ERROR = rule("EDS000", Severity.ERROR, "edsconv",
+                      "edsconv could not check this file: it is unreadable, or edsconv failed on it (please report that)")
+
+#: Suffixes of the files a directory is searched for (files named explicitly are linted whatever their suffix).
+EDS_SUFFIXES = (".eds", ".EDS")
+#: Below this many files the work stays in this process: starting workers costs more than it saves.
+PARALLEL_THRESHOLD = 8
+#: From this many files on, a progress bar is shown (on a terminal only).
+PROGRESS_THRESHOLD = 20
+
+
+# --- per file -------------------------------------------------------------------------
+def analyse(eds: EdsFile) -> list[Diagnostic]:
+    """Every diagnostic of a file that has been read."""
+    # the semantic checks (edsconv.checks) are added here
+    return list(eds.diagnostics)
+
+
+def lint_file(path: str) -> FileReport:
+    """Read and check one file; never raises for a problem of this file."""
+    try:
+        diagnostics = analyse(load(path))
+    except OSError as error:
+        return _failed(path, f"cannot read the file: {error.strerror or error}")
+    except Exception as error:  # noqa: BLE001 - one file must never stop the run
+        where = traceback.extract_tb(error.__traceback__)[-1]
+        return _failed(path, f"internal error {type(error).__name__}: {error} "
+                       f"(at {Path(where.filename).name}:{where.lineno}); please report it")
+    for d in diagnostics:
+        if d.path is None:
+            d.path = path
+    diagnostics.sort(key=lambda d: (d.line, d.column))
+    return FileReport(path, diagnostics)
+
+
+def _failed(path: str, message: str) -> FileReport:
+    return FileReport(path, [Diagnostic.of(INTERNAL_ERROR, message, path=path)], error=message)
+
+
+# --- many files -------------------------------------------------------------------------
+def discover(paths: Iterable[str | Path]) -> list[str]:
+    """Files as given, and directories searched recursively for ``*.eds``/``*.EDS``, sorted.
+
+    A file reached twice is linted once, where it first appears.
+    """
+    found: dict[str, None] = {}
+    for path in map(Path, paths):
+        if path.is_dir():
+            below = (p for p in path.rglob("*") if p.suffix in EDS_SUFFIXES and p.is_file())
+            found.update(dict.fromkeys(sorted(str(p) for p in below)))
+        else:
+            found[str(path)] = None
+    return list(found)
+
+
+def lint_paths(paths: Iterable[str | Path], select: Sequence[str] = (), ignore: Sequence[str] = (),
+               jobs: int | None = None) -> list[FileReport]:
+    """Lint every file :func:`discover` finds; reports in its order, filtered by ``select``/``ignore``."""
+    files = discover(paths)
+    jobs = jobs or os.cpu_count() or 1
+    if jobs > 1 and len(files) > PARALLEL_THRESHOLD:
+        reports = _lint_parallel(files, jobs)
+    else:
+        reports = [lint_file(f) for f in _progress(files, len(files))]
+    if select or ignore:
+        for report in reports:
+            report.diagnostics = [d for d in report.diagnostics if selected(d.code, select, ignore)]
+    return reports
+
+
+def _lint_parallel(files: list[str], jobs: int) -> list[FileReport]:
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures.process import BrokenProcessPool
+
+    reports: list[FileReport | None] = [None] * len(files)
+    # Largest first, one file a task: sizes differ a hundredfold, and the last big file must not start alone.
+    order = sorted(range(len(files)), key=lambda i: -_size(files[i]))
+    try:
+        with ProcessPoolExecutor(max_workers=min(jobs, len(files))) as pool:
+            futures = {pool.submit(lint_file, files[i]): i for i in order}
+            for future in _progress(as_completed(futures), len(files)):
+                reports[futures[future]] = future.result()
+    except BrokenProcessPool as error:
+        # A worker died (killed, out of memory): every file not answered for is reported, the rest kept.
+        message = f"the worker process checking this file died ({error}); please report it"
+        reports = [r or _failed(f, message) for f, r in zip(files, reports)]
+    return reports
+
+
+def _size(path: str) -> int:
+    try:
+        return os.stat(path).st_size
+    except OSError:
+        return 0
+
+
+def _progress(items: Iterable, total: int) -> Iterable:
+    """``items``, with a progress bar on stderr when it is a terminal and there are many."""
+    if total < PROGRESS_THRESHOLD or not sys.stderr.isatty():
+        yield from items
+        return
+    from rich.console import Console
+    from rich.progress import Progress
+
+    with Progress(console=Console(stderr=True), transient=True) as progress:
+        task = progress.add_task("linting", total=total)
+        for item in items:
+            yield item
+            progress.advance(task)
+
+
+def selected(code: str, select: Sequence[str], ignore: Sequence[str]) -> bool:
+    """Ruff's rule: the longest matching prefix decides, ``ignore`` on a tie; no ``select`` selects all."""
+    chosen = max((len(p) for p in select if code.startswith(p)), default=None if select else 0)
+    dropped = max((len(p) for p in ignore if code.startswith(p)), default=None)
+    if chosen is None:
+        return False
+    return dropped is None or chosen > dropped
+
+
+def promote_warnings(reports: Iterable[FileReport]) -> None:
+    """``--warnings-as-errors``: every warning becomes an error."""
+    for report in reports:
+        for d in report.diagnostics:
+            if d.severity is Severity.WARNING:
+                d.severity = Severity.ERROR
+
+
+# --- commands -------------------------------------------------------------------------------
+def _codes(ctx: click.Context, param: click.Parameter, value: tuple[str, ...]) -> tuple[str, ...]:
+    """Comma-separated codes or prefixes, each matching at least one rule."""
+    codes = tuple(c.strip().upper() for v in value for c in v.split(",") if c.strip())
+    if codes:
+        known = [r.code for r in all_rules()]
+        unknown = [c for c in codes if not any(k.startswith(c) for k in known)]
+        if unknown:
+            raise click.BadParameter(f"no rule code starts with {', '.join(unknown)} (see 'edsconv rules')")
+    return codes
+
+
+@click.command("lint")
+@click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True, path_type=Path))
+@click.option("--format", "output_format", type=click.Choice(list(FORMATTERS)), default="text", show_default=True,
+              help="text: path:line:col: CODE message [clause]; json; sarif (2.1.0, for code scanning); "
+              "github (workflow annotations).")
+@click.option("--select", multiple=True, callback=_codes, metavar="CODES",
+              help="Report only these codes or code prefixes (comma-separated, e.g. EDS0,EDS101).")
+@click.option("--ignore", multiple=True, callback=_codes, metavar="CODES",
+              help="Do not report these codes or code prefixes; the longer matching prefix wins over --select.")
+@click.option("--warnings-as-errors", is_flag=True, help="Report warnings as errors, and fail on them.")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), default=None,
+              help="Worker processes for many files [default: every core].")
+def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str, ...], ignore: tuple[str, ...],
+                 warnings_as_errors: bool, jobs: int | None) -> int:
+    """Check EDS files, and directories recursively for *.eds/*.EDS files.
+
+    Exit status: 0 no errors, 1 errors found, 2 could not run.
+    """
+    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS
+
+    reports = lint_paths(paths, select, ignore, jobs)
+    if warnings_as_errors:
+        promote_warnings(reports)
+    sys.stdout.write(FORMATTERS[output_format](reports))
+    sys.stdout.flush()
+    if output_format == "text":
+        _print_summary(reports)
+    return EXIT_FINDINGS if any(has_errors(r.diagnostics) for r in reports) else EXIT_CLEAN
+
+
+def _print_summary(reports: list[FileReport]) -> None:
+    if not reports:
+        click.echo("no EDS files found", err=True)
+        return
+    counts = {s: sum(d.severity is s for r in reports for d in r.diagnostics) for s in Severity}
+    failed = sum(r.error is not None for r in reports)
+    line = (f"{len(reports)} file{'s' if len(reports) != 1 else ''}: {counts[Severity.ERROR]} errors, "
+            f"{counts[Severity.WARNING]} warnings, {counts[Severity.INFO]} notes")
+    click.echo(line + (f"; {failed} could not be checked" if failed else ""), err=True)
+
+
+@click.command("rules")
+@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
+def rules_command(output_format: str) -> int:
+    """List every rule: code, severity, clause, import-blocking mark (!) and summary."""
+    import json
+
+    rules = all_rules()
+    if output_format == "json":
+        click.echo(json.dumps([{"code": r.code, "severity": str(r.severity), "clause": r.clause,
+                                "import_blocking": r.import_blocking, "summary": r.summary} for r in rules],
+                              indent=2))
+        return 0
+    clause_width = max(len(r.clause) for r in rules)
+    for r in rules:
+        mark = "!" if r.import_blocking else " "
+        click.echo(f"{r.code}  {str(r.severity):7}  {r.clause:{clause_width}}  {mark} {r.summary}")
+    return 0
+

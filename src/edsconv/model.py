@@ -1,0 +1,365 @@
+"""The semantic model of an EDS: a typed description of the device.
+
+Built from the syntax model by :func:`edsconv.semantic.build`; the XML reader
+builds the same model. Every object keeps the syntax ``entry`` it came from
+(None when it was built otherwise), so positions and the original spelling
+stay reachable. Values are Python values: ``int``, ``float``, ``str``,
+``datetime.date``/``time``, :class:`~edsconv.values.Revision`, paths as tuples
+of :class:`~edsconv.values.PathItem`, references as :class:`Reference`.
+A field whose value could not be converted is None (a diagnostic says why);
+a field that a Proxy entry defers to its Proxied entry holds :data:`MODULE`.
+"""
+
+from __future__ import annotations
+
+import datetime
+from dataclasses import dataclass, field
+from typing import Any
+
+from edsconv import spec_tables as tables
+from edsconv.diagnostics import Diagnostic
+from edsconv.syntax import EdsFile, Entry, Section
+from edsconv.values import PathItem, Revision, StringIMember
+
+#: The field keyword of C.4.1.5.3: "take this field from the Proxied entry".
+MODULE = tables.MODULE_KEYWORD
+#: C.4.1.5.3.2: "all member pairs come from the ProxiedAssem".
+MODULE_MEMBER_LIST = tables.MODULE_MEMBER_LIST_KEYWORD
+
+
+@dataclass(slots=True)
+class Reference:
+    """A keyword naming another entry (``Param3``, ``ProxyAssem2``), resolved to it."""
+
+    keyword: str
+    family: str
+    number: int
+    #: the Parameter / Assembly / ... it names; None when undefined
+    target: Any = field(default=None, compare=False, repr=False)
+    #: where it is written: the entry and the 0-based index of the field
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+    field_index: int = field(default=0, compare=False, repr=False)
+    #: the bit of the parameter a member addresses (``Param10:0`` in newer files)
+    bit: int | None = None
+
+    def __str__(self) -> str:
+        return self.keyword
+
+
+@dataclass(slots=True)
+class FileDescription:
+    """[File], Table C.6."""
+
+    description: str | None = None
+    create_date: datetime.date | None = None
+    create_time: datetime.time | None = None
+    mod_date: datetime.date | None = None
+    mod_time: datetime.time | None = None
+    revision: Revision | None = None
+    home_url: str | None = None
+
+
+@dataclass(slots=True)
+class Identity:
+    """[Device], Table C.8: the Identity object attributes that key an EDS to a product."""
+
+    vendor_code: int | None = None
+    vendor_name: str | None = None
+    product_type: int | None = None
+    product_type_string: str | None = None
+    product_code: int | None = None
+    major_revision: int | None = None
+    minor_revision: int | None = None
+    product_name: str | None = None
+    catalog: str | None = None
+    icon: str | None = None
+    exclude_from_adapter_rack_connection: str | None = None
+
+
+@dataclass(slots=True)
+class Classification:
+    """ClassN of [Device Classification] (C.4.1.4.4)."""
+
+    number: int
+    classification: str | None
+    subclassifications: tuple[str, ...] = ()
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class ParamClass:
+    """[ParamClass], Table C.10."""
+
+    max_instances: int | None = None
+    descriptor: int | None = None
+    cfg_assembly: int | None = None
+
+
+@dataclass(slots=True)
+class Scaling:
+    """Fields 13-16 of ParamN and their links 17-20 (Table C.13, Figure C.5)."""
+
+    multiplier: int | None = None
+    divisor: int | None = None
+    base: int | None = None
+    offset: int | None = None
+    multiplier_link: int | None = None
+    divisor_link: int | None = None
+    base_link: int | None = None
+    offset_link: int | None = None
+    decimal_precision: int | None = None
+
+
+@dataclass(slots=True)
+class Parameter:
+    """ParamN, ProxyParamN or ProxiedParamN (Table C.13, C.4.1.5.3.1)."""
+
+    keyword: str
+    family: str
+    number: int
+    link_path_size: int | None = None
+    link_path: tuple[PathItem, ...] | None = None
+    descriptor: int | None = None
+    #: the resolved CIP data type; None when the code is unknown or deferred to the module
+    data_type: tables.DataType | None = None
+    #: the code or obsolete identifier as written (MODULE when deferred)
+    data_type_code: int | str | None = None
+    data_size: int | str | None = None
+    name: str | None = None
+    units: str | None = None
+    help: str | None = None
+    minimum: Any = None
+    maximum: Any = None
+    default: Any = None
+    scaling: Scaling = field(default_factory=Scaling)
+    international_name: tuple[StringIMember, ...] | None = None
+    international_units: tuple[StringIMember, ...] | None = None
+    international_help: tuple[StringIMember, ...] | None = None
+    #: EnumN (ProxyEnumN, ProxiedEnumN): value -> text, in file order
+    enum: dict[int, str] | None = None
+    #: ProxyParamSizeAdderN: (minimum, maximum, default) added to a ProxyParam's values
+    size_adder: tuple[Any, Any, Any] | None = None
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+    def descriptor_flags(self) -> list[str]:
+        """The names of the Table C.15 bits set in the descriptor."""
+        return tables.flags_set(self.descriptor or 0, tables.PARAM_DESCRIPTOR_BITS)
+
+    def engineering_value(self, value: float) -> float:
+        """The value shown to the user, by the scaling formula of Figure C.5."""
+        s = self.scaling
+        precision = s.decimal_precision or 0
+        return tables.scale(value, s.multiplier if s.multiplier is not None else 1,
+                            s.divisor if s.divisor is not None else 1, s.base if s.base is not None else 1,
+                            s.offset or 0, precision)
+
+
+@dataclass(slots=True)
+class ParameterGroup:
+    """GroupN of [Groups] (Table C.19)."""
+
+    number: int
+    name: str | None
+    declared_members: int | None
+    members: list[Reference] = field(default_factory=list)
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class AssemblyMember:
+    """One Member Size / Member Reference pair of an AssemN (Table C.20)."""
+
+    #: bits; None when empty (then the referenced entry gives the size)
+    size: int | None
+    #: a Reference (ParamN, AssemN, Proxy...), an int (UDINT constant), a path,
+    #: a member keyword (ExternalID, InputSlotMask0 ...) or None for a pad
+    reference: Reference | int | tuple[PathItem, ...] | str | None
+    #: offset of the Member Size field in the entry (0-based), for diagnostics
+    field_index: int = field(default=0, compare=False)
+
+    @property
+    def is_pad(self) -> bool:
+        return self.reference is None
+
+
+@dataclass(slots=True)
+class Assembly:
+    """AssemN, ProxyAssemN or ProxiedAssemN (Table C.20, C.4.1.5.3.2)."""
+
+    keyword: str
+    family: str
+    number: int
+    name: str | None = None
+    path: tuple[PathItem, ...] | str | None = None
+    #: bytes
+    size: int | str | None = None
+    descriptor: int | str | None = None
+    members: list[AssemblyMember] = field(default_factory=list)
+    #: True for a ProxyAssem whose members are the ProxiedAssem's (ModuleMemberList)
+    module_member_list: bool = False
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class ConnectionEndpoint:
+    """RPI, size and format of one direction (or config part) of a connection."""
+
+    rpi: int | Reference | str | None = None
+    size: int | Reference | str | None = None
+    format: Reference | str | None = None
+
+
+@dataclass(slots=True)
+class Connection:
+    """ConnectionN, ProxyConnectN or ProxiedConnectN (Table C.22)."""
+
+    keyword: str
+    family: str
+    number: int
+    trigger_transport: int | str | None = None
+    parameters: int | str | None = None
+    o_to_t: ConnectionEndpoint = field(default_factory=ConnectionEndpoint)
+    t_to_o: ConnectionEndpoint = field(default_factory=ConnectionEndpoint)
+    config1: ConnectionEndpoint = field(default_factory=ConnectionEndpoint)
+    config2: ConnectionEndpoint = field(default_factory=ConnectionEndpoint)
+    name: str | None = None
+    help: str | None = None
+    path: tuple[PathItem, ...] | str | None = None
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+    def trigger_transport_bits(self) -> list[tuple[tables.BitField, int, str]]:
+        if not isinstance(self.trigger_transport, int):
+            return []
+        return tables.decode_bits(self.trigger_transport, tables.TRIGGER_TRANSPORT_BITS)
+
+    def parameter_bits(self) -> list[tuple[tables.BitField, int, str]]:
+        if not isinstance(self.parameters, int):
+            return []
+        return tables.decode_bits(self.parameters, tables.CONNECTION_PARAMETER_BITS)
+
+
+@dataclass(slots=True)
+class Port:
+    """PortN of [Port] (Table C.25)."""
+
+    number: int
+    type_name: str | None = None
+    name: str | None = None
+    object_path: tuple[PathItem, ...] | None = None
+    port_number: int | None = None
+    #: fields 7.. as written (their meaning depends on the port type)
+    specific: tuple[str | None, ...] = ()
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class Rack:
+    """RackN of a module's [Modular] section (Table C.26)."""
+
+    number: int
+    vendor_code: int | None = None
+    product_type: int | None = None
+    product_code: int | None = None
+    major_revision: int | None = None
+    minor_revision: int | None = None
+    legal_slots: tuple[int, ...] = ()
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def key(self) -> tuple:
+        return (self.vendor_code, self.product_type, self.product_code, self.major_revision, self.minor_revision)
+
+
+@dataclass(slots=True)
+class Query:
+    path: tuple[PathItem, ...] | None = None
+    service: int | None = None
+    id_size: int | None = None
+    empty_slot_id: tuple[PathItem, ...] | None = None
+
+
+@dataclass(slots=True)
+class Modular:
+    """[Modular] (C.4.1.5.2): chassis and module entries."""
+
+    define_slots_in_rack: int | None = None
+    slot_display_rule: Reference | None = None
+    width: int | None = None
+    racks: list[Rack] = field(default_factory=list)
+    external_id: tuple[PathItem, ...] | None = None
+    generic_id: tuple[PathItem, ...] | None = None
+    extern_id_exact_match: str | None = None
+    query: Query | None = None
+
+    @property
+    def is_chassis(self) -> bool:
+        return self.define_slots_in_rack is not None
+
+    @property
+    def is_module(self) -> bool:
+        return bool(self.racks) or self.width is not None
+
+
+@dataclass(slots=True)
+class GenericEntry:
+    """An entry the 2003 text does not define, kept with its plain values.
+
+    Values: None (empty), str (a string's text, or a scalar's spelling), or a
+    list for a brace group.
+    """
+
+    keyword: str
+    values: list
+    entry: Entry | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class GenericSection:
+    """A section the 2003 text does not define ([Capacity], object classes, vendor sections)."""
+
+    name: str
+    entries: list[GenericEntry] = field(default_factory=list)
+    section: Section | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class Device:
+    """Everything an EDS says about a device."""
+
+    file: FileDescription = field(default_factory=FileDescription)
+    identity: Identity = field(default_factory=Identity)
+    classifications: list[Classification] = field(default_factory=list)
+    param_class: ParamClass | None = None
+    #: ParamN, ProxyParamN and ProxiedParamN by keyword, in file order
+    parameters: dict[str, Parameter] = field(default_factory=dict)
+    groups: list[ParameterGroup] = field(default_factory=list)
+    #: Revision entry of [Assembly] (class attribute 1)
+    assembly_revision: int | None = None
+    assemblies: dict[str, Assembly] = field(default_factory=dict)
+    connections: dict[str, Connection] = field(default_factory=dict)
+    ports: list[Port] = field(default_factory=list)
+    modular: Modular | None = None
+    #: entries the 2003 text does not define, in sections it does, by section name
+    extra_entries: dict[str, list[GenericEntry]] = field(default_factory=dict)
+    #: sections the 2003 text does not define, in file order
+    other_sections: list[GenericSection] = field(default_factory=list)
+    #: the syntax model it was built from (None when built from XML)
+    eds: EdsFile | None = field(default=None, compare=False, repr=False)
+    diagnostics: list[Diagnostic] = field(default_factory=list, compare=False, repr=False)
+
+    @property
+    def networks(self) -> list[str]:
+        """The public networks of the ClassN entries (EtherNetIP, DeviceNet, ControlNet)."""
+        return [c.classification for c in self.classifications if c.classification]
+
+    @property
+    def is_ethernetip(self) -> bool:
+        return tables.ETHERNETIP in self.networks
+
+    def resolve(self, keyword: str) -> Parameter | Assembly | Connection | GenericEntry | None:
+        """The entry a reference keyword names, in any section (newer-spec entries
+        such as AssemExaN resolve to their generic entry)."""
+        found = self.parameters.get(keyword) or self.assemblies.get(keyword) or self.connections.get(keyword)
+        if found is None:
+            found = next((e for entries in self.extra_entries.values() for e in entries if e.keyword == keyword), None)
+        return found

@@ -1,0 +1,377 @@
+"""Syntax model -> semantic model: typed values, references resolved.
+
+Driven by :mod:`edsconv.spec_tables`: the type of every field comes from its
+FieldSpec, so converting a field is one generic step; the per-section code only
+says which typed attribute a field lands in. Conversion problems become
+diagnostics on the field; the structural checks live in :mod:`edsconv.checks`.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from typing import Any
+
+from edsconv import spec_tables as tables
+from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.model import (
+    MODULE,
+    MODULE_MEMBER_LIST,
+    Assembly,
+    AssemblyMember,
+    Classification,
+    Connection,
+    ConnectionEndpoint,
+    Device,
+    GenericEntry,
+    GenericSection,
+    Modular,
+    ParamClass,
+    Parameter,
+    ParameterGroup,
+    Port,
+    Query,
+    Rack,
+    Reference,
+    Scaling,
+)
+from edsconv.syntax import EdsFile, Entry, Group, Scalar, String, Value, ValueKind
+from edsconv.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
+
+OBSOLETE_DATA_TYPE = rule("EDS112", Severity.WARNING, "C.4.1.4.6",
+                          "A parameter names its data type by an obsolete Table C.16 identifier")
+UNKNOWN_DATA_TYPE = rule("EDS113", Severity.ERROR, "C.4.1.4.6", "A parameter's data type code is not a CIP data type")
+
+_REFERENCE_KINDS = ("ParamRef", "ProxyParamRef", "AssemRef", "ProxyAssemRef")
+_REFERENCE = {kind: re.compile(tables.FIELD_VALUE_KINDS[kind]) for kind in _REFERENCE_KINDS}
+_MEMBER_KEYWORD = re.compile(tables.FIELD_VALUE_KINDS["MemberKeyword"])
+_NUMBERED_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
+# AssemExaN: the extended assembly of CIP editions after 2003 (its size may be a
+# ParamN); real files name it where an AssemN may stand.
+_NEWER_ASSEMBLY = re.compile(r"AssemExa[1-9][0-9]*")
+
+
+def reference(keyword: str, entry: Entry | None = None, field_index: int = 0) -> Reference:
+    """A Reference from ``Param3``; newer files also address a bit: ``Param10:0``."""
+    family, number, bit = _NUMBERED_REFERENCE.fullmatch(keyword).groups()
+    return Reference(f"{family}{number}", family, int(number), entry=entry, field_index=field_index,
+                     bit=int(bit) if bit is not None else None)
+
+
+def plain(value: Value | None):
+    """A syntax value as plain data: None, a string's text, a scalar's spelling, a list."""
+    if value is None:
+        return None
+    if isinstance(value, Group):
+        return [plain(f.value) for f in value.fields]
+    if isinstance(value, String):
+        return value.text
+    return value.raw
+
+
+class _Builder:
+    def __init__(self, eds: EdsFile) -> None:
+        self.eds = eds
+        self.device = Device(eds=eds)
+        self.diagnostics = self.device.diagnostics
+        self.enums: list[tuple[str, Entry]] = []
+        self.size_adders: list[Entry] = []
+
+    # --- diagnostics and field conversion --------------------------------------------
+    def report(self, rule_, message: str, node) -> None:
+        self.diagnostics.append(Diagnostic.of(rule_, message, node.line, node.column, self.eds.path))
+
+    def value(self, entry: Entry, index: int, type_name: str, *, proxy: bool = False) -> Any:
+        """Field ``index`` (0-based) of ``entry`` converted to ``type_name``; None when
+        empty or not convertible (then a diagnostic says why)."""
+        if index >= len(entry.fields):
+            return None
+        field = entry.fields[index]
+        if field.value is None:
+            return None
+        try:
+            return self.convert(field.value, type_name, proxy, entry, index)
+        except ValueNote as note:
+            self.report(note.rule, f"{entry.keyword} field {index + 1}: {note.message}", field)
+            return note.value
+        except ValueProblem as problem:
+            self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field)
+            return None
+
+    def convert(self, value: Value, type_name: str, proxy: bool, entry: Entry, index: int) -> Any:
+        kinds = type_name.split("|")
+        if isinstance(value, Scalar) and value.kind is ValueKind.WORD:
+            raw = value.raw
+            if proxy and raw in (MODULE, MODULE_MEMBER_LIST):
+                return raw
+            for kind in kinds:
+                pattern = _REFERENCE.get(kind)
+                if pattern is not None and pattern.fullmatch(raw.partition(":")[0]):
+                    return reference(raw, entry, index)
+            if "AssemRef" in kinds and _NEWER_ASSEMBLY.fullmatch(raw):
+                return reference(raw, entry, index)
+            if "MemberKeyword" in kinds and _MEMBER_KEYWORD.fullmatch(raw):
+                return raw
+        if isinstance(value, String) and "EPATH" in kinds:
+            return to_path(value, allow_references=True)
+        for kind in kinds:
+            if kind in _REFERENCE or kind in ("MemberKeyword", "Empty", "EPATH"):
+                continue
+            if kind in ("ParamDataType", "Integer", "PortSpecific"):
+                return plain(value)
+            return convert(value, kind)
+        names = " or ".join(kind.removesuffix("Ref") + "N" if kind in _REFERENCE else kind for kind in kinds)
+        raise ValueProblem(WRONG_KIND, f"expected {names}, found {plain(value)!r}")
+
+    def fields(self, entry: Entry, spec: tables.EntrySpec, *, proxy: bool = False) -> list[Any]:
+        """Every field of a fixed-layout entry converted by its FieldSpec."""
+        values = []
+        for index in range(len(entry.fields)):
+            field_spec = spec.field_at(index + 1)
+            if field_spec is None or field_spec.eds_type in ("Empty", "ParamDataType", "Integer", "PortSpecific"):
+                values.append(plain(entry.fields[index].value))
+            else:
+                values.append(self.value(entry, index, field_spec.eds_type, proxy=proxy))
+        return values
+
+    # --- sections --------------------------------------------------------------------
+    def build(self) -> Device:
+        handlers = {
+            "File": self.file_entry, "Device": self.device_entry, "Device Classification": self.classification,
+            "ParamClass": self.param_class, "Params": self.params_entry, "Groups": self.group,
+            "Assembly": self.assembly_entry, "Connection Manager": self.connection, "Port": self.port,
+            "Modular": self.modular_entry,
+        }
+        for section in self.eds.sections:
+            spec = tables.SECTIONS.get(section.name)
+            if spec is None:
+                self.device.other_sections.append(GenericSection(
+                    section.name, [self.generic(e) for e in section.entries], section))
+                continue
+            handler = handlers[spec.name]
+            for entry in section.entries:
+                entry_spec = tables.entry_spec(spec.name, entry.keyword)
+                if entry_spec is None:
+                    self.device.extra_entries.setdefault(spec.name, []).append(self.generic(entry))
+                else:
+                    handler(entry, entry_spec)
+        self.attach_enums_and_adders()
+        for ref in iter_references(self.device):
+            ref.target = self.device.resolve(ref.keyword)
+        return self.device
+
+    @staticmethod
+    def generic(entry: Entry) -> GenericEntry:
+        return GenericEntry(entry.keyword, [plain(f.value) for f in entry.fields], entry)
+
+    def single(self, entry: Entry, spec: tables.EntrySpec) -> Any:
+        return self.value(entry, 0, spec.fields[0].eds_type)
+
+    _FILE_ATTRIBUTES = {"DescText": "description", "CreateDate": "create_date", "CreateTime": "create_time",
+                        "ModDate": "mod_date", "ModTime": "mod_time", "Revision": "revision", "HomeURL": "home_url"}
+    _DEVICE_ATTRIBUTES = {
+        "VendCode": "vendor_code", "VendName": "vendor_name", "ProdType": "product_type",
+        "ProdTypeStr": "product_type_string", "ProdCode": "product_code", "MajRev": "major_revision",
+        "MinRev": "minor_revision", "ProdName": "product_name", "Catalog": "catalog", "Icon": "icon",
+        "ExcludeFromAdapterRackConnection": "exclude_from_adapter_rack_connection",
+    }
+
+    def file_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        setattr(self.device.file, self._FILE_ATTRIBUTES[spec.keyword], self.single(entry, spec))
+
+    def device_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        setattr(self.device.identity, self._DEVICE_ATTRIBUTES[spec.keyword], self.single(entry, spec))
+
+    def classification(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        values = [plain(f.value) for f in entry.fields]
+        number = tables.split_numbered(entry.keyword)[1]
+        self.device.classifications.append(Classification(
+            number, self.value(entry, 0, "Keyword"), tuple(v for v in values[1:] if v is not None), entry))
+
+    def param_class(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        param_class = self.device.param_class = self.device.param_class or ParamClass()
+        attribute = {"MaxInst": "max_instances", "Descriptor": "descriptor", "CfgAssembly": "cfg_assembly"}
+        setattr(param_class, attribute[spec.keyword], self.single(entry, spec))
+
+    # --- [Params] ----------------------------------------------------------------------
+    def params_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        if spec.keyword in ("Enum", "ProxyEnum", "ProxiedEnum"):
+            self.enums.append((spec.pairs_with, entry))
+        elif spec.keyword == "ProxyParamSizeAdder":
+            self.size_adders.append(entry)
+        elif entry.keyword not in self.device.parameters:
+            self.device.parameters[entry.keyword] = self.parameter(entry, spec)
+
+    def parameter(self, entry: Entry, spec: tables.EntrySpec) -> Parameter:
+        proxy = spec.keyword == "ProxyParam"
+        v = self.fields(entry, spec, proxy=proxy)
+        v += [None] * (len(tables.PARAM_FIELDS) - len(v))
+        parameter = Parameter(entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1], entry=entry)
+        parameter.link_path_size, parameter.link_path, parameter.descriptor = v[1], v[2], v[3]
+        parameter.data_type_code, parameter.data_size = v[4], v[5]
+        parameter.name, parameter.units, parameter.help = v[6], v[7], v[8]
+        parameter.data_type = self.data_type(entry, v[4])
+        for attribute, index in (("minimum", 9), ("maximum", 10), ("default", 11)):
+            setattr(parameter, attribute, self.param_value(entry, index, parameter, attribute, proxy))
+        parameter.scaling = Scaling(*v[12:21])
+        parameter.international_name, parameter.international_units, parameter.international_help = v[21:24]
+        return parameter
+
+    def data_type(self, entry: Entry, code) -> tables.DataType | None:
+        if not isinstance(code, int):
+            return None  # empty, Module, or a structured type given as a path
+        if code in tables.DATA_TYPES_BY_CODE:
+            return tables.DATA_TYPES_BY_CODE[code]
+        field = entry.fields[4]
+        if code in tables.OBSOLETE_DATA_TYPE_IDS:
+            data_type = tables.OBSOLETE_DATA_TYPE_IDS[code]
+            self.report(OBSOLETE_DATA_TYPE, f"{entry.keyword}: data type {field.raw} is the obsolete identifier of "
+                        f"{data_type.name}; write 0x{data_type.code:02X}", field)
+            return data_type
+        self.report(UNKNOWN_DATA_TYPE, f"{entry.keyword}: data type {field.raw} is not a CIP data type code", field)
+        return None
+
+    def param_value(self, entry: Entry, index: int, parameter: Parameter, attribute: str, proxy: bool) -> Any:
+        """Minimum, maximum or default: typed by the parameter's data type (Table C.17)."""
+        if index >= len(entry.fields) or entry.fields[index].value is None:
+            return None
+        value = entry.fields[index].value
+        if proxy and isinstance(value, Scalar) and value.raw == MODULE:
+            return MODULE
+        data_type = parameter.data_type
+        if data_type is None:
+            return plain(value)
+        rule_ = tables.min_max_rule(data_type.name)
+        if attribute != "default" and rule_.meaning == "length":
+            return self.value(entry, index, "UINT")
+        if data_type.kind in ("string", "epath"):
+            return self.value(entry, index, "EDS_Char_Array")
+        if data_type.kind == "stringi" or data_type.size is None:
+            return plain(value)
+        return self.value(entry, index, data_type.name)
+
+    def attach_enums_and_adders(self) -> None:
+        parameters = self.device.parameters
+        for family, entry in self.enums:
+            number = tables.split_numbered(entry.keyword)[1]
+            parameter = parameters.get(f"{family}{number}")
+            type_name = parameter.data_type.name if parameter and parameter.data_type and \
+                parameter.data_type.kind in ("unsigned", "signed", "bits", "bool") else "LINT"
+            enum: dict[int, str] = {}
+            for index in range(0, len(entry.fields) - 1, 2):
+                key = self.value(entry, index, type_name)
+                text = self.value(entry, index + 1, "EDS_Char_Array")
+                if key is not None:
+                    enum[key] = text
+            if parameter is not None and parameter.enum is None:
+                parameter.enum = enum
+        for entry in self.size_adders:
+            parameter = parameters.get(f"ProxyParam{tables.split_numbered(entry.keyword)[1]}")
+            if parameter is not None:
+                parameter.size_adder = tuple(self.param_value(entry, i, parameter, a, False)
+                                             for i, a in enumerate(("minimum", "maximum", "default")))
+
+    # --- [Groups] ------------------------------------------------------------------------
+    def group(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        members = []
+        for index in range(2, len(entry.fields)):
+            number = self.value(entry, index, "UINT")
+            if number is not None:
+                members.append(Reference(f"Param{number}", "Param", number, entry=entry, field_index=index))
+        self.device.groups.append(ParameterGroup(
+            tables.split_numbered(entry.keyword)[1], self.value(entry, 0, "EDS_Char_Array"),
+            self.value(entry, 1, "UINT"), members, entry))
+
+    # --- [Assembly] ----------------------------------------------------------------------
+    def assembly_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        if spec.keyword == "Revision":
+            self.device.assembly_revision = self.single(entry, spec)
+        elif entry.keyword not in self.device.assemblies:
+            self.device.assemblies[entry.keyword] = self.assembly(entry, spec)
+
+    def assembly(self, entry: Entry, spec: tables.EntrySpec) -> Assembly:
+        proxy = spec.keyword == "ProxyAssem"
+        assembly = Assembly(entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1], entry=entry)
+        assembly.name = self.value(entry, 0, "EDS_Char_Array", proxy=proxy)
+        assembly.path = self.value(entry, 1, "EPATH", proxy=proxy)
+        assembly.size = self.value(entry, 2, "UINT", proxy=proxy)
+        assembly.descriptor = self.value(entry, 3, "WORD", proxy=proxy)
+        member_type = spec.fields[7].eds_type
+        index = 6
+        while index < len(entry.fields):
+            first = entry.fields[index].value
+            if proxy and isinstance(first, Scalar) and first.raw == MODULE_MEMBER_LIST:
+                assembly.module_member_list = True
+                index += 1
+                continue
+            size = self.value(entry, index, "UINT")
+            target = entry.fields[index + 1].value if index + 1 < len(entry.fields) else None
+            if isinstance(target, String) and target.text == "":
+                member_reference = None  # "" is a pad, like an empty field
+            else:
+                member_reference = self.value(entry, index + 1, member_type, proxy=proxy)
+            assembly.members.append(AssemblyMember(size, member_reference, index))
+            index += 2
+        return assembly
+
+    # --- [Connection Manager] -------------------------------------------------------------
+    def connection(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        if entry.keyword in self.device.connections:
+            return
+        v = self.fields(entry, spec, proxy=spec.keyword == "ProxyConnect")
+        v += [None] * (len(tables.CONNECTION_FIELDS) - len(v))
+        self.device.connections[entry.keyword] = Connection(
+            entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1],
+            trigger_transport=v[0], parameters=v[1],
+            o_to_t=ConnectionEndpoint(*v[2:5]), t_to_o=ConnectionEndpoint(*v[5:8]),
+            config1=ConnectionEndpoint(None, *v[8:10]), config2=ConnectionEndpoint(None, *v[10:12]),
+            name=v[12], help=v[13], path=v[14], entry=entry)
+
+    # --- [Port] --------------------------------------------------------------------------
+    def port(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        v = self.fields(entry, spec)
+        v += [None] * (4 - len(v))
+        self.device.ports.append(Port(tables.split_numbered(entry.keyword)[1], v[0], v[1], v[2], v[3],
+                                      tuple(v[6:]), entry))
+
+    # --- [Modular] -----------------------------------------------------------------------
+    def modular_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        modular = self.device.modular = self.device.modular or Modular()
+        keyword = spec.keyword
+        if keyword == "Rack":
+            v = self.fields(entry, spec)
+            v += [None] * (8 - len(v))
+            modular.racks.append(Rack(tables.split_numbered(entry.keyword)[1], *v[:5],
+                                      tuple(s for s in v[8:] if s is not None), entry))
+        elif keyword == "Query":
+            v = self.fields(entry, spec)
+            v += [None] * (4 - len(v))
+            modular.query = Query(*v[:4])
+        else:
+            attribute = {"DefineSlotsInRack": "define_slots_in_rack", "SlotDisplayRule": "slot_display_rule",
+                         "Width": "width", "ExternalID": "external_id", "GenericID": "generic_id",
+                         "ExternIDExactMatch": "extern_id_exact_match"}[keyword]
+            setattr(modular, attribute, self.single(entry, spec))
+
+
+def iter_references(device: Device) -> Iterator[Reference]:
+    """Every reference of the model: group members, assembly members, connection
+    RPI/size/format fields, the chassis SlotDisplayRule."""
+    for group in device.groups:
+        yield from group.members
+    for assembly in device.assemblies.values():
+        for member in assembly.members:
+            if isinstance(member.reference, Reference):
+                yield member.reference
+    for connection in device.connections.values():
+        for endpoint in (connection.o_to_t, connection.t_to_o, connection.config1, connection.config2):
+            for value in (endpoint.rpi, endpoint.size, endpoint.format):
+                if isinstance(value, Reference):
+                    yield value
+    if device.modular is not None and isinstance(device.modular.slot_display_rule, Reference):
+        yield device.modular.slot_display_rule
+
+
+def build(eds: EdsFile) -> Device:
+    """The semantic model of a parsed EDS; conversion problems are in ``device.diagnostics``."""
+    return _Builder(eds).build()

@@ -1,0 +1,127 @@
+"""The shared output formats: text, json, SARIF 2.1.0 and GitHub workflow annotations."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+from edsconv import report
+from edsconv.diagnostics import Diagnostic, Severity
+from edsconv.report import FileReport
+
+from conftest import REPO
+
+
+def diagnostic(code: str, message: str, line: int, column: int, severity: Severity, path: str) -> Diagnostic:
+    return Diagnostic(code, message, line, column, path, severity, "C.4.1.2.2")
+
+
+def sample(root: Path) -> list[FileReport]:
+    bad = str(root / "dir" / "bad file.eds")
+    return [
+        FileReport(bad, [
+            diagnostic("EDS001", "unexpected 'x': expected ';'", 3, 7, Severity.ERROR, bad),
+            diagnostic("EDS005", "not plain ASCII", 9, 1, Severity.WARNING, bad),
+            diagnostic("XML005", "a note", 1, 1, Severity.INFO, bad),
+        ]),
+        FileReport(str(root / "good.eds")),
+        FileReport("/elsewhere/broken.eds", [Diagnostic("EDS000", "cannot read the file: Permission denied",
+                                                        path="/elsewhere/broken.eds")], error="cannot read"),
+    ]
+
+
+def test_text_is_path_line_column_code_message_clause(tmp_path: Path):
+    text = report.format_text(sample(tmp_path))
+    assert text.splitlines()[0] == f"{tmp_path}/dir/bad file.eds:3:7: EDS001 unexpected 'x': expected ';' [C.4.1.2.2]"
+    assert len(text.splitlines()) == 4
+
+
+def test_json_shape_is_files_with_diagnostics_and_a_summary(tmp_path: Path):
+    document = json.loads(report.format_json(sample(tmp_path)))
+    assert set(document) == {"files", "summary"}
+    assert [f["path"] for f in document["files"]] == [r.path for r in sample(tmp_path)]
+    first = document["files"][0]["diagnostics"][0]
+    assert {"code", "severity", "line", "column", "message", "clause"} <= set(first)
+    assert first["severity"] == "error"
+    assert document["files"][2]["error"] == "cannot read"
+    assert document["summary"] == {"files": 3, "errors": 2, "warnings": 1}
+
+
+def validate_sarif(document: dict) -> None:
+    """The essential requirements of the SARIF 2.1.0 schema, and GitHub code scanning's."""
+    assert document["version"] == "2.1.0"
+    assert document["$schema"].endswith("sarif-2.1.0.json")
+    (run,) = document["runs"]
+    driver = run["tool"]["driver"]
+    assert driver["name"] == "edsconv"
+    rule_ids = [r["id"] for r in driver["rules"]]
+    assert len(rule_ids) == len(set(rule_ids))
+    for described in driver["rules"]:
+        assert described["shortDescription"]["text"]
+        assert described["defaultConfiguration"]["level"] in {"error", "warning", "note"}
+    for result in run["results"]:
+        assert result["ruleId"] in rule_ids
+        assert driver["rules"][result["ruleIndex"]]["id"] == result["ruleId"]
+        assert result["level"] in {"error", "warning", "note"}
+        assert result["message"]["text"]
+        (location,) = result["locations"]
+        artifact = location["physicalLocation"]["artifactLocation"]
+        assert artifact["uri"] and " " not in artifact["uri"]
+        if "uriBaseId" in artifact:
+            assert artifact["uriBaseId"] in run["originalUriBaseIds"]
+            assert not artifact["uri"].startswith("/")
+        region = location["physicalLocation"].get("region", {})
+        assert region.get("startLine", 1) >= 1 and region.get("startColumn", 1) >= 1
+
+
+def test_sarif_meets_the_schema_essentials(tmp_path: Path):
+    document = report.sarif_document(sample(tmp_path), root=tmp_path)
+    validate_sarif(document)
+    results = document["runs"][0]["results"]
+    assert [r["level"] for r in results] == ["error", "warning", "note", "error"]
+    first = results[0]["locations"][0]["physicalLocation"]
+    assert first["artifactLocation"] == {"uri": "dir/bad%20file.eds", "uriBaseId": "%SRCROOT%"}
+    assert first["region"] == {"startLine": 3, "startColumn": 7}
+    outside = results[3]["locations"][0]["physicalLocation"]
+    assert outside == {"artifactLocation": {"uri": "file:///elsewhere/broken.eds"}}
+    assert document["runs"][0]["originalUriBaseIds"]["%SRCROOT%"]["uri"] == tmp_path.as_uri() + "/"
+
+
+def test_sarif_lists_every_registered_rule():
+    rules = report.sarif_document([])["runs"][0]["tool"]["driver"]["rules"]
+    assert [r["id"] for r in rules] == [r.code for r in report.all_rules()]
+    assert {"EDS000", "EDS001", "XML003"} <= {r["id"] for r in rules}
+
+
+def test_sarif_help_uri_points_at_the_rule_heading_in_docs(monkeypatch):
+    monkeypatch.setattr(report, "project_url", lambda: "https://example.org/edsconv")
+    driver = report.sarif_document([])["runs"][0]["tool"]["driver"]
+    assert driver["informationUri"] == "https://example.org/edsconv"
+    by_id = {r["id"]: r for r in driver["rules"]}
+    assert by_id["EDS001"]["helpUri"] == "https://example.org/edsconv/blob/main/docs/rules.md#eds001"
+
+
+def test_github_annotations(tmp_path: Path):
+    lines = report.format_github(sample(tmp_path), root=tmp_path).splitlines()
+    assert lines[0] == ("::error file=dir/bad file.eds,line=3,col=7,title=EDS001::"
+                        "unexpected 'x': expected ';' [C.4.1.2.2]")
+    assert lines[1].startswith("::warning file=dir/bad file.eds,line=9,col=1,title=EDS005::")
+    assert lines[2].startswith("::notice ")
+    # no line: the annotation is on the file
+    assert lines[3] == "::error file=/elsewhere/broken.eds,title=EDS000::cannot read the file: Permission denied"
+
+
+def test_github_escaping():
+    assert report.escape_data("100% done\r\nnext: a,b") == "100%25 done%0D%0Anext: a,b"
+    assert report.escape_property("C:\\x,y%\n") == "C%3A\\x%2Cy%25%0A"
+    path = "odd,name: 50%.eds"
+    d = Diagnostic("EDS001", "line one\nline two", 2, 3, path)
+    (line,) = report.format_github([FileReport(path, [d])]).splitlines()
+    assert line == "::error file=odd%2Cname%3A 50%25.eds,line=2,col=3,title=EDS001::line one%0Aline two"
+
+
+def test_every_rule_has_a_heading_in_docs_rules_md():
+    headings = set(re.findall(r"^### (\S+)$", (REPO / "docs" / "rules.md").read_text(), re.MULTILINE))
+    missing = [r.code for r in report.all_rules() if r.code not in headings]
+    assert not missing, f"docs/rules.md lacks a '### CODE' heading for {missing}"

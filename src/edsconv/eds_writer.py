@@ -8,7 +8,7 @@ line; a comment ends its line and the entry continues on the next.
 
 from __future__ import annotations
 
-from edsconv.syntax import Comment, EdsFile, Entry, Field, Group, Section
+from edsconv.syntax import Comment, EdsFile, Entry, Field, Group, Section, Unparsed
 
 _INDENT = "    "
 
@@ -68,12 +68,22 @@ def _write_entries(out: _Lines, section: Section) -> None:
     pending = next(unparsed, None)
     for index, entry in enumerate(section.entries):
         while pending is not None and pending[0] <= index:
-            out.own_line(pending[1].text)
+            _write_unparsed(out, pending[1])
             pending = next(unparsed, None)
         _write_entry(out, entry)
     while pending is not None:
-        out.own_line(pending[1].text)
+        _write_unparsed(out, pending[1])
         pending = next(unparsed, None)
+
+
+def _write_unparsed(out: _Lines, unparsed: Unparsed) -> None:
+    for comment in unparsed.leading_comments:
+        out.own_line(f"${comment.text}")
+    out.own_line(unparsed.text)
+    if unparsed.comments:
+        out.current = out.lines.pop()
+        for comment in unparsed.comments:
+            out.comment(comment)
 
 
 def _write_entry(out: _Lines, entry: Entry) -> None:

@@ -53,9 +53,14 @@ TOO_MANY_ERRORS = rule("EDS014", Severity.ERROR, "C.4.1.2.2", "So many syntax er
 NO_SECTIONS = rule("EDS015", Severity.ERROR, "C.4.1.2.2.4", "The file has no sections", import_blocking=True)
 LONG_PREFIX_ON_CONTINUATION = rule(
     "EDS016", Severity.WARNING, "C.4.1.3.3.4", "Only the first part of a concatenated string may carry the L prefix")
+TOO_DEEP = rule("EDS017", Severity.ERROR, "C.4.1.2.14", "Braces are nested deeper than any EDS needs")
 
 #: Syntax errors reported per file before the reader gives up.
 MAX_SYNTAX_ERRORS = 100
+#: Brace groups nested deeper than this are kept as text: real files nest 3
+#: deep, and a bound keeps every recursive walk of the model far from Python's
+#: recursion limit.
+MAX_BRACE_DEPTH = 64
 
 _COMMENT = re.compile(r"\$[^\n]*")
 _SECTION_NAME = re.compile(r"[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
@@ -163,6 +168,12 @@ class _Builder(Transformer):
         start = self.base + start_token.start_pos
         keyword = self.lexicon.entry_keyword.match(start_token.value).group()
         end = self.base + semicolon.end_pos
+        depth = max((child[4] for child in children[1:-1] if isinstance(child, tuple)), default=0)
+        if depth > MAX_BRACE_DEPTH:
+            self.report(TOO_DEEP, f"{keyword} nests braces {depth} deep (at most {MAX_BRACE_DEPTH} are read); "
+                        "the entry is kept as text", start)
+            self.keep_unparsed(start, end)
+            return
         flat: list[Field] = []
         fields = self.fields(children[1:-1], self.base + semicolon.start_pos, flat)
         entry = Entry(keyword, fields, offset=start, end_offset=end, source=self.lines)
@@ -179,10 +190,12 @@ class _Builder(Transformer):
         section.entries.append(entry)
         self._record_statement(start, end, entry, flat)
 
-    def group(self, children: list) -> tuple[Group, int, int, list]:
+    def group(self, children: list) -> tuple[Group, int, int, list, int]:
         open_brace, close_brace = children[0], children[-1]
+        inner = children[1:-1]
+        depth = 1 + max((child[4] for child in inner if isinstance(child, tuple)), default=0)
         # The fields are built by the enclosing entry, in document order.
-        return Group([]), self.base + open_brace.start_pos, self.base + close_brace.start_pos, children[1:-1]
+        return Group([]), self.base + open_brace.start_pos, self.base + close_brace.start_pos, inner, depth
 
     def _record_statement(self, start: int, end: int, node, flat: list[Field]) -> None:
         line_end = self.text.find("\n", end)
@@ -204,7 +217,7 @@ class _Builder(Transformer):
             if isinstance(child, Token):
                 current = self.scan_run(child, fields, current, flat)
                 continue
-            group, start, close, inner = child
+            group, start, close, inner, _ = child
             if current is not None:
                 self.report(MISSING_COMMA, "a ',' is missing before this '{'", start)
                 fields.append(current)
@@ -282,7 +295,7 @@ class _Builder(Transformer):
         self.comments.sort(key=lambda item: item[0])
         for offset, comment in self.comments:
             if any(low <= offset < high for low, high in self.unparsed_ranges):
-                continue
+                continue  # part of the text kept verbatim
             index = bisect.bisect_right(statement_starts, offset) - 1
             if index >= 0 and offset < statements[index][1]:
                 _, _, node, flat = statements[index]
@@ -303,8 +316,9 @@ class _Builder(Transformer):
         section = self.section
         if section is None:
             section = self.eds.preamble = self.eds.preamble or Section(name="", offset=start, source=self.lines)
-        section.unparsed.append((len(section.entries), Unparsed(self.text[start:end].rstrip(), start, self.lines)))
-        self.last_end = end
+        unparsed = Unparsed(self.text[start:end].rstrip(), offset=start, source=self.lines)
+        section.unparsed.append((len(section.entries), unparsed))
+        self._record_statement(start, end, unparsed, [])
 
 
 def _offset_of(field: Field) -> int:
@@ -322,7 +336,9 @@ def _describe(token: Token) -> str:
 
 def _expected(expected: set[str]) -> str:
     words = sorted({_EXPECTED_WORDS.get(name, name) for name in expected})
-    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
+    if len(words) <= 1:
+        return words[0] if words else "something else"
+    return ", ".join(words[:-1]) + " or " + words[-1]
 
 
 def parse(source: str | bytes, filename: str | None = None) -> EdsFile:
@@ -356,9 +372,11 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
     errors = 0
     resume = 0
 
-    def insert_missing_semicolon(error: UnexpectedInput) -> bool:
+    def on_error(error: UnexpectedInput) -> bool:
+        """Insert a missing ';' and go on; otherwise keep what is complete and give up."""
         if not (isinstance(error, UnexpectedToken) and "SEMICOLON" in error.expected
                 and error.token.type in ("ENTRY_START", "SECTION", "$END")):
+            _reduce_complete_statements(error)
             return False
         stack = error.interactive_parser.parser_state.value_stack
         last = stack[-1] if stack else None
@@ -373,16 +391,14 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
         # Zero-width, at the end of the last field, so positions stay truthful.
         error.interactive_parser.feed_token(
             Token("SEMICOLON", ";", start_pos=after - builder.base, end_pos=after - builder.base))
-        if error.token.type == "$END":
-            error.interactive_parser.feed_eof(error.token)
-        else:
+        if error.token.type != "$END":  # Lark feeds $END itself when the parse resumes
             error.interactive_parser.feed_token(error.token)
         return True
 
     while True:
         builder.base = resume
         try:
-            lark.parse(text[resume:] if resume else text, on_error=insert_missing_semicolon)
+            lark.parse(text[resume:] if resume else text, on_error=on_error)
             return
         except UnexpectedInput as error:
             errors += 1
@@ -395,6 +411,23 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
                 return
             resume = _resync(text, position)
             builder.keep_unparsed(builder.last_end, resume)
+
+
+def _reduce_complete_statements(error: UnexpectedInput) -> None:
+    """Let the parser reduce a statement that was complete before the error.
+
+    LALR reduces an entry only when it sees the token after its ';'; when that
+    token is the error, the entry would be lost. Feeding the end of input
+    reduces it (the builder records it). The parser is abandoned afterwards, so
+    it is fed as it is: Lark's copy() would lose the tokens' end positions.
+    """
+    parser = getattr(error, "interactive_parser", None)
+    if parser is None:
+        return
+    try:
+        parser.feed_eof()
+    except UnexpectedInput:
+        pass  # the text before the error ends inside an entry: nothing complete to keep
 
 
 def _error_offset(error: UnexpectedInput, text: str, base: int) -> int:
@@ -418,6 +451,8 @@ def _error_message(error: UnexpectedInput, text: str, position: int):
     if isinstance(error, UnexpectedEOF):
         return SYNTAX_ERROR, f"the file ends early: expected {_expected(set(error.expected))}"
     assert isinstance(error, UnexpectedToken)
+    if error.token.type == "RUN" and "SEMICOLON" in error.expected:
+        return MISSING_COMMA, f"a ',' is missing before {_describe(error.token)}"
     return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(set(error.expected))}"
 
 

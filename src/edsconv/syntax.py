@@ -202,6 +202,9 @@ class Unparsed(Located):
     """Text that could not be parsed, kept verbatim so that nothing is lost."""
 
     text: str
+    #: comments after the text on its last line
+    comments: list[Comment] = field(default_factory=list)
+    leading_comments: list[Comment] = field(default_factory=list)
     offset: int = field(default=0, compare=False)
     source: LineIndex | None = field(default=None, compare=False, repr=False)
 

@@ -480,16 +480,12 @@ def test_damaged_statements_are_kept_verbatim(number, section, lines):
     assert [item.text.splitlines()[0] for _, item in kept] == [text[line - 1] for line in lines]
 
 
-@pytest.mark.xfail(strict=True, reason="reader bug: a complete entry (or section header) right before text the "
-                   "lexer cannot read is dropped into Unparsed instead of kept")
 def test_c10_as_printed_keeps_the_entry_before_the_dots():
     port = broken("C10").section("Port")
     assert [e.keyword for e in port.entries] == ["Port1", "Port2"]
     assert port.entry("Port1").fields == figure("C10").section("Port").entry("Port1").fields
 
 
-@pytest.mark.xfail(strict=True, reason="reader bug: a section header right before text the lexer cannot read "
-                   "is lost, and the next entry is reported as standing before the first section (EDS011)")
 def test_section_header_before_unreadable_text_is_kept():
     eds = edsconv.parse("[Port]\n.\nPort2 = 1;\n")
     assert [s.name for s in eds.sections] == ["Port"]

@@ -38,9 +38,10 @@ PROGRESS_THRESHOLD = 20
 
 # --- per file -------------------------------------------------------------------------
 def analyse(eds: EdsFile) -> list[Diagnostic]:
-    """Every diagnostic of a file that has been read."""
-    # the semantic checks (edsconv.checks) are added here
-    return list(eds.diagnostics)
+    """Every diagnostic of a file that has been read: syntax, values, checks."""
+    from edsconv import analyse as analyse_device
+
+    return analyse_device(eds)[1]
 
 
 def lint_file(path: str) -> FileReport:

@@ -20,7 +20,6 @@ EXIT_FINDINGS = 1
 EXIT_USAGE = 2
 
 
-
 class LazyGroup(click.Group):
     """A group whose commands named in :attr:`lazy` are imported only when they run (or help lists them).
 
@@ -49,6 +48,13 @@ class LazyGroup(click.Group):
 @click.version_option(package_name="edsconv")
 def cli() -> None:
     """Parse, check and convert CIP Electronic Data Sheets (EDS) and ISO 15745-4 XML profiles."""
+
+
+@cli.result_callback()
+@click.pass_context
+def _exit_with(ctx: click.Context, code: int | None) -> None:
+    """Every subcommand returns its exit code; exit with it however click was invoked."""
+    ctx.exit(code if isinstance(code, int) else EXIT_CLEAN)
 
 
 @cli.command("parse")
@@ -81,12 +87,11 @@ def parse_command(files: tuple[Path, ...], output_format: str) -> int:
 
 
 def main() -> None:
-    """Entry point: every subcommand returns its exit code (see the module docstring)."""
+    """Entry point: exit codes as in the module docstring; usage errors are 2."""
     try:
+        # Without standalone mode click returns the code of ctx.exit() ...
         code = cli.main(standalone_mode=False)
-    except click.exceptions.Exit as exit_:
-        sys.exit(exit_.exit_code)
-    except click.ClickException as error:
+    except click.ClickException as error:  # ... and raises usage errors, which it would exit 2 with anyway
         error.show()
         sys.exit(EXIT_USAGE)
     except click.exceptions.Abort:

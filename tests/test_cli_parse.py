@@ -13,7 +13,7 @@ from click.testing import CliRunner
 from edsconv.cli import cli
 
 CLEAN = "[File]\nDescText = \"x\"; $ c\n[Device]\nK = 1, {2, *};\n"
-BROKEN = '[File]\nA = 1 2;\nB = "a\\qb";\n'
+BROKEN = '[File]\nA = 1 ];\nB = "a\\qb";\n'
 WARNING_ONLY = "[File]\n[TCP/IP Interface Class]\nA = 1;\n"
 LINE = re.compile(r"^(?P<path>.+):(?P<line>\d+):(?P<col>\d+): (?P<code>EDS\d{3}) (?P<message>.+) \[(?P<clause>C\.[\d.]+)\]$")
 
@@ -55,7 +55,7 @@ def test_broken_file_exit_1_with_one_line_per_diagnostic(files):
         (str(files["broken"]), "2", "7", "EDS001", "C.4.1.2.2"),
         (str(files["broken"]), "3", "7", "EDS003", "C.4.1.3.3.5"),
     ]
-    assert "unexpected '2'" in matches[0]["message"]
+    assert "unexpected ']" in matches[0]["message"]
 
 
 @pytest.mark.parametrize("args", [["{missing}"], ["{clean}", "{missing}"], ["--bogus", "{clean}"], [],
@@ -79,7 +79,7 @@ def test_json_format(files):
     assert section["name"] == "File"
     assert [e["keyword"] for e in section["entries"]] == ["B"]
     assert section["entries"][0]["fields"][0]["value"]["kind"] == "STRING"
-    assert [u["text"] for u in section["unparsed"]] == ["A = 1 2;"]
+    assert [u["text"] for u in section["unparsed"]] == ["A = 1 ];"]
     assert [(d["code"], d["line"], d["column"], d["severity"]) for d in model["diagnostics"]] == [
         ("EDS001", 2, 7, "error"), ("EDS003", 3, 7, "error")]
 

@@ -1,1 +1,631 @@
-"""Checks of parameters, assemblies, connections, ports and modules (C.4.1.4.6 - C.4.1.5)."""
+"""Checks of parameters, assemblies, connections, ports and modules (C.4.1.4.6 - C.4.1.5).
+
+Every limit comes from :mod:`edsconv.spec_tables` (bit tables, Table C.17's
+min/max rules, Table C.18's numeric-only fields, the Port and Query field
+specs). Values the model holds as None failed conversion and already carry an
+EDS1xx diagnostic, and "Module" fields defer to another file: neither is
+reported again here.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterator
+
+from edsconv import spec_tables as tables
+from edsconv.checks import Context, check
+from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.model import (
+    MODULE,
+    Assembly,
+    AssemblyMember,
+    Connection,
+    ConnectionEndpoint,
+    Device,
+    Parameter,
+    Reference,
+)
+from edsconv.semantic import iter_references
+from edsconv.syntax import Entry
+from edsconv.values import PathItem
+
+E, W, I = Severity.ERROR, Severity.WARNING, Severity.INFO
+
+UNDEFINED_REFERENCE = rule("EDS301", E, "C.4.1.4.8", "A ParamN, ProxyParamN, AssemN or ProxyAssemN used in the "
+                           "file is not defined", import_blocking=True)
+WRONG_PARAMETER_TYPE = rule("EDS302", E, "C.4.1.4.9.4", "A parameter named as a connection RPI, size or path value "
+                            "does not have the data type the field evaluates to")
+UNPAIRED_ENTRY = rule("EDS303", E, "C.4.1.4.6", "An EnumN, ProxyEnumN, ProxiedEnumN or ProxyParamSizeAdderN has no "
+                      "parameter with its number")
+GROUP_MEMBER_COUNT = rule("EDS304", E, "C.4.1.4.7", "A group's Number of Members differs from the members it lists")
+DUPLICATE_CONNECTION_NAME = rule("EDS305", E, "C.4.1.4.9.11", "Two connections have the same name string")
+TRIGGER_RESERVED_BITS = rule("EDS306", E, "C.4.1.4.9.2", "A trigger and transport mask sets reserved bits")
+TRANSPORT_NOT_ONE = rule("EDS307", E, "C.4.1.4.9.2", "A trigger and transport mask does not set exactly one "
+                         "transport type")
+NO_CLASS_OR_TRIGGER = rule("EDS308", E, "C.4.1.4.9.2", "A trigger and transport mask sets no class or no trigger")
+PARAMETERS_RESERVED_BITS = rule("EDS309", E, "C.4.1.4.9.3", "A connection parameters mask sets reserved bits")
+RESERVED_REAL_TIME_FORMAT = rule("EDS310", E, "C.4.1.4.9.3", "A connection uses a reserved real time transfer "
+                                 "format", import_blocking=True)
+SIZE_WITHOUT_FORMAT = rule("EDS311", E, "C.4.1.4.9.6", "A connection leaves both size and format of a direction "
+                           "empty")
+SIZE_FORMAT_MISMATCH = rule("EDS312", W, "C.4.1.4.9.5", "A connection's size differs from the size of its format "
+                            "assembly")
+PROXY_CONNECT_NAME_MODULE = rule("EDS313", E, "C.4.1.5.3.3", "A ProxyConnect's connection name is 'Module'")
+PARAM_RESERVED_BITS = rule("EDS314", W, "C.4.1.4.6", "A parameter descriptor sets reserved bits (Table C.15)")
+VALUE_ORDER = rule("EDS315", E, "C.4.1.4.6", "A parameter's minimum, maximum and default are not in order "
+                   "min <= default <= max")
+STRING_LENGTHS_MISSING = rule("EDS316", E, "C.4.1.4.6", "A string parameter does not give its minimum and maximum "
+                              "length (Table C.17)")
+BIT_STRING_MIN_MAX = rule("EDS317", W, "C.4.1.4.6", "A bit string parameter (BYTE, WORD, DWORD, LWORD) gives a "
+                          "minimum or maximum (Table C.17)")
+SCALING_ON_NON_NUMERIC = rule("EDS318", W, "C.4.1.4.6", "A parameter of a non-numeric type gives scaling, link or "
+                              "precision fields (Table C.18)")
+SCALING_ZERO = rule("EDS319", E, "C.4.1.4.6", "A parameter that supports scaling has a scaling multiplier, divisor "
+                    "or base of 0")
+DATA_SIZE_MISMATCH = rule("EDS320", E, "C.4.1.4.6", "A parameter's Data Size does not match its data type "
+                          "(Table C.14)")
+ENUM_WITHOUT_DESCRIPTOR_BIT = rule("EDS321", W, "C.4.1.4.6", "A parameter has an EnumN but its descriptor does not "
+                                   "set bit 1 (supports enumerated strings)")
+ASSEMBLY_RESERVED_BITS = rule("EDS322", W, "C.4.1.4.8", "An assembly descriptor sets reserved bits (Table C.21)")
+EMPTY_MEMBER = rule("EDS323", E, "C.4.1.4.8", "An assembly member has neither a size nor a reference")
+ASSEMBLY_SIZE_MISMATCH = rule("EDS324", E, "C.4.1.4.8", "An assembly's Size differs from the total of its member "
+                              "sizes")
+ASSEMBLY_NOT_WHOLE_BYTES = rule("EDS325", E, "C.4.1.4.8", "An assembly's members do not add up to a whole number "
+                                "of bytes")
+NESTED_ASSEMBLY = rule("EDS326", I, "C.4.1.4.8", "An assembly has another assembly as a member (nested AssemN)",
+                       import_blocking=True)
+ASSEMBLY_CYCLE = rule("EDS327", E, "C.4.1.4.8", "An assembly contains itself through its members",
+                      import_blocking=True)
+PACKED_EPATH_MEMBER = rule("EDS328", E, "C.4.1.4.8", "An assembly member path is a packed EPATH (no pad bytes)",
+                           import_blocking=True)
+SLOT_MASK_PAIR = rule("EDS329", E, "C.4.1.5.3.2", "An assembly uses both slot mask keywords of a pair "
+                      "(InputSlotMask0 and InputSlotMask1 ...)")
+SLOT_MASK_WITHOUT_SIZE = rule("EDS330", E, "C.4.1.5.3.2", "A slot mask member has no Member Size")
+MODULE_IN_MEMBER = rule("EDS331", E, "C.4.1.5.3.2", "A ProxyAssem member reference is 'Module'")
+DUPLICATE_PORT_NUMBER = rule("EDS332", E, "C.4.1.4.10", "Two ports have the same port number")
+UNKNOWN_PORT_TYPE = rule("EDS333", E, "C.4.1.4.10", "A Port Type Name is neither a spec keyword nor a "
+                         "vendor-specific keyword")
+LEGAL_SLOT_OUT_OF_RANGE = rule("EDS334", E, "C.4.1.5.2.2", "A Rack legal slot is not a slot of the chassis "
+                               "(0 to DefineSlotsInRack - 1)")
+WIDTH_ZERO = rule("EDS335", E, "C.4.1.5.2.3", "A module's Width is 0")
+SAFETY_REAL_TIME_FORMAT = rule("EDS337", W, "C.4.1.4.9.3", "A connection uses real time format 5, reserved in "
+                               "the 2003 text and the CIP Safety format of later editions")
+QUERY_FIELD_VALUE = rule("EDS336", E, "C.4.1.5.2.4", "A Query entry has a service other than 1 or 14, or an ID "
+                         "size outside 1 to 16")
+
+
+def _node(entry: Entry | None, index: int):
+    """Field ``index`` of ``entry`` for positions, else the entry itself (or None)."""
+    if entry is not None and 0 <= index < len(entry.fields):
+        return entry.fields[index]
+    return entry
+
+
+def _written(entry: Entry | None, index: int) -> bool:
+    """True when field ``index`` holds a value (converted or not)."""
+    return entry is not None and index < len(entry.fields) and entry.fields[index].value is not None
+
+
+def _is_int(value) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+# --- references ------------------------------------------------------------------------
+
+
+def _path_references(connection: Connection) -> Iterator[PathItem]:
+    if isinstance(connection.path, tuple):
+        yield from (item for item in connection.path if item.reference)
+
+
+@check
+def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
+    for ref in iter_references(ctx.device):
+        if ref.target is None:
+            where = ref.entry.keyword if ref.entry is not None else "a reference"
+            yield ctx.at(UNDEFINED_REFERENCE, f"{where} names {ref.keyword}, which is not defined",
+                         _node(ref.entry, ref.field_index))
+    for connection in ctx.device.connections.values():
+        for item in _path_references(connection):
+            if ctx.device.resolve(item.reference) is None:
+                yield ctx.at(UNDEFINED_REFERENCE, f"{connection.keyword}: the path names [{item.reference}], "
+                             "which is not defined", _node(connection.entry, 14))
+
+
+#: C.4.1.4.9.4 - .10 and .13: the type a parameter named in a connection field evaluates to.
+_RPI_TYPES, _SIZE_TYPES, _PATH_TYPES = ("UDINT",), ("UINT",), ("USINT", "UINT", "UDINT")
+
+
+def _connection_value_fields(connection: Connection) -> Iterator[tuple[str, int, object, tuple[str, ...]]]:
+    """(field name, 0-based index, value, allowed data types) of the RPI and size fields."""
+    directions = (("O=>T", 2, connection.o_to_t), ("T=>O", 5, connection.t_to_o))
+    for name, first, endpoint in directions:
+        yield f"{name} RPI", first, endpoint.rpi, _RPI_TYPES
+        yield f"{name} size", first + 1, endpoint.size, _SIZE_TYPES
+    for name, first, endpoint in (("config #1", 8, connection.config1), ("config #2", 10, connection.config2)):
+        yield f"{name} size", first, endpoint.size, _SIZE_TYPES
+
+
+@check
+def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
+    for connection in ctx.device.connections.values():
+        for name, index, value, allowed in _connection_value_fields(connection):
+            if isinstance(value, Reference) and isinstance(value.target, Parameter):
+                data_type = value.target.data_type
+                if data_type is not None and data_type.name not in allowed:
+                    yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: {name} names {value.keyword}, a "
+                                 f"{data_type.name}; it shall evaluate to {' or '.join(allowed)}",
+                                 _node(connection.entry, index))
+        for item in _path_references(connection):
+            target = ctx.device.resolve(item.reference)
+            if isinstance(target, Parameter) and target.data_type is not None \
+                    and target.data_type.name not in _PATH_TYPES:
+                yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: the path names {item.reference}, a "
+                             f"{target.data_type.name}; path parameters shall be USINT, UINT or UDINT",
+                             _node(connection.entry, 14))
+
+
+@check
+def unpaired_entries(ctx: Context) -> Iterator[Diagnostic]:
+    """EnumN and the like name a parameter by their number (EntrySpec.pairs_with)."""
+    for section in ctx.eds.sections:
+        spec = tables.section_spec(section.name)
+        if spec is None or spec.name != "Params":
+            continue
+        for entry in section.entries:
+            entry_spec = spec.entry(entry.keyword)
+            if entry_spec is None or entry_spec.pairs_with is None:
+                continue
+            partner = f"{entry_spec.pairs_with}{tables.split_numbered(entry.keyword)[1]}"
+            if partner not in ctx.device.parameters:
+                yield ctx.at(UNPAIRED_ENTRY, f"{entry.keyword} has no {partner} to belong to", entry)
+
+
+# --- groups ----------------------------------------------------------------------------
+
+
+@check
+def group_member_counts(ctx: Context) -> Iterator[Diagnostic]:
+    for group in ctx.device.groups:
+        if group.entry is None or not _is_int(group.declared_members):
+            continue
+        listed = max(len(group.entry.fields) - 2, 0)
+        if group.declared_members != listed:
+            yield ctx.at(GROUP_MEMBER_COUNT, f"{group.entry.keyword} declares {group.declared_members} members but "
+                         f"lists {listed}", _node(group.entry, 1))
+
+
+# --- connections -----------------------------------------------------------------------
+
+
+@check
+def connection_names(ctx: Context) -> Iterator[Diagnostic]:
+    # Proxied connections describe another device (the module's file); the names
+    # the user chooses from are those of Connection and ProxyConnect entries.
+    first_use: dict[str, str] = {}
+    for connection in ctx.device.connections.values():
+        if connection.family == "ProxiedConnect" or not isinstance(connection.name, str):
+            continue
+        if connection.family == "ProxyConnect" and connection.name == MODULE:
+            continue  # EDS313 says what is wrong with it
+        if connection.name in first_use:
+            yield ctx.at(DUPLICATE_CONNECTION_NAME, f"{connection.keyword}: the name {connection.name!r} is already "
+                         f"used by {first_use[connection.name]}", _node(connection.entry, 12))
+        else:
+            first_use[connection.name] = connection.keyword
+
+
+def _reserved_bits(ctx: Context, rule_, keyword: str, label: str, value, table: tables.BitTable,
+                   node) -> Iterator[Diagnostic]:
+    """A diagnostic when ``value`` sets bits ``table`` reserves (or does not define)."""
+    if not _is_int(value):
+        return
+    reserved = tables.reserved_bits_set(value, table)
+    if reserved:
+        bits = ", ".join(str(bit) for bit in range(table.width) if reserved >> bit & 1)
+        yield ctx.at(rule_, f"{keyword}: {label} 0x{value:0{table.width // 4}X} sets reserved bit(s) {bits} "
+                     f"(Table {table.table})", node)
+
+
+def _trigger_transport(ctx: Context, connection: Connection, mask: int) -> Iterator[Diagnostic]:
+    table, node = tables.TRIGGER_TRANSPORT_BITS, _node(connection.entry, 0)
+    transports = [f.name for f in table.group("transport") if not f.reserved and f.extract(mask)]
+    if len(transports) != 1:
+        yield ctx.at(TRANSPORT_NOT_ONE, f"{connection.keyword}: trigger and transport 0x{mask:08X} sets "
+                     f"{len(transports)} transport types ({', '.join(transports) or 'none'}); exactly one shall "
+                     "be set", node)
+    for group in ("class", "trigger"):
+        if not any(f.extract(mask) for f in table.group(group) if not f.reserved):
+            yield ctx.at(NO_CLASS_OR_TRIGGER, f"{connection.keyword}: trigger and transport 0x{mask:08X} sets no "
+                         f"{group} bit", node)
+
+
+def _real_time_formats(ctx: Context, connection: Connection, mask: int) -> Iterator[Diagnostic]:
+    for bit_field, value in tables.reserved_values_set(mask, tables.CONNECTION_PARAMETER_BITS):
+        rule_, note = RESERVED_REAL_TIME_FORMAT, "is reserved (Table C.24)"
+        if value == _SAFETY_FORMAT:
+            rule_, note = SAFETY_REAL_TIME_FORMAT, "is reserved in the 2003 text (CIP Safety in later editions)"
+        yield ctx.at(rule_, f"{connection.keyword}: connection parameters 0x{mask:08X}: {bit_field.name} {value} "
+                     f"{note}", _node(connection.entry, 1))
+
+
+@check
+def connection_masks(ctx: Context) -> Iterator[Diagnostic]:
+    """Tables C.23 and C.24: reserved bits and values, one transport, a class and a trigger."""
+    for connection in ctx.device.connections.values():
+        yield from _reserved_bits(ctx, TRIGGER_RESERVED_BITS, connection.keyword, "trigger and transport",
+                                  connection.trigger_transport, tables.TRIGGER_TRANSPORT_BITS,
+                                  _node(connection.entry, 0))
+        yield from _reserved_bits(ctx, PARAMETERS_RESERVED_BITS, connection.keyword, "connection parameters",
+                                  connection.parameters, tables.CONNECTION_PARAMETER_BITS, _node(connection.entry, 1))
+        if _is_int(connection.trigger_transport):
+            yield from _trigger_transport(ctx, connection, connection.trigger_transport)
+        if _is_int(connection.parameters):
+            yield from _real_time_formats(ctx, connection, connection.parameters)
+
+
+_DIRECTIONS = (("O=>T", 3, "o_to_t"), ("T=>O", 6, "t_to_o"))
+#: Real time transfer format 5: reserved by Table C.24 but assigned to CIP Safety
+#: by later editions, whose safety connections take their sizes from the safety
+#: validator, so an empty size and format is how real safety EDS files write them.
+_SAFETY_FORMAT = 5
+
+
+def _real_time_format(connection: Connection, direction: str) -> int | None:
+    if not _is_int(connection.parameters):
+        return None
+    return tables.CONNECTION_PARAMETER_BITS.field(f"{direction} real time format").extract(connection.parameters)
+
+
+@check
+def connection_sizes_and_formats(ctx: Context) -> Iterator[Diagnostic]:
+    for connection in ctx.device.connections.values():
+        entry = connection.entry
+        for name, size_index, attribute in _DIRECTIONS:
+            endpoint: ConnectionEndpoint = getattr(connection, attribute)
+            if entry is not None and not _written(entry, size_index) and not _written(entry, size_index + 1) \
+                    and _real_time_format(connection, name) != _SAFETY_FORMAT:
+                yield ctx.at(SIZE_WITHOUT_FORMAT, f"{connection.keyword}: {name} size and {name} format are both "
+                             "empty; give the size or a format to take it from", _node(entry, size_index))
+            if _is_int(endpoint.size) and isinstance(endpoint.format, Reference) \
+                    and isinstance(endpoint.format.target, Assembly):
+                assembly = endpoint.format.target
+                if _is_int(assembly.size) and assembly.size != endpoint.size:
+                    yield ctx.at(SIZE_FORMAT_MISMATCH, f"{connection.keyword}: {name} size is {endpoint.size} bytes "
+                                 f"but its format {assembly.keyword} is {assembly.size} bytes",
+                                 _node(entry, size_index))
+
+
+@check
+def proxy_connect_names(ctx: Context) -> Iterator[Diagnostic]:
+    for connection in ctx.device.connections.values():
+        if connection.family == "ProxyConnect" and connection.name == MODULE:
+            yield ctx.at(PROXY_CONNECT_NAME_MODULE, f"{connection.keyword}: the connection name shall be given, "
+                         "not 'Module'", _node(connection.entry, 12))
+
+
+# --- parameters ------------------------------------------------------------------------
+
+
+@check
+def descriptors(ctx: Context) -> Iterator[Diagnostic]:
+    """Tables C.15 and C.21: reserved descriptor bits shall be 0."""
+    for parameter in ctx.device.parameters.values():
+        yield from _reserved_bits(ctx, PARAM_RESERVED_BITS, parameter.keyword, "descriptor", parameter.descriptor,
+                                  tables.PARAM_DESCRIPTOR_BITS, _node(parameter.entry, 3))
+    for assembly in ctx.device.assemblies.values():
+        yield from _reserved_bits(ctx, ASSEMBLY_RESERVED_BITS, assembly.keyword, "descriptor", assembly.descriptor,
+                                  tables.ASSEM_DESCRIPTOR_BITS, _node(assembly.entry, 3))
+
+
+def _bounds(parameter: Parameter) -> tuple[object, object] | None:
+    """Effective (minimum, maximum) of a numeric parameter: an absent bound is the
+    type's own (Table C.17 note b); None when a bound is unusable."""
+    data_type = parameter.data_type
+    entry = parameter.entry
+    bounds = []
+    for value, index, type_bound in ((parameter.minimum, 9, data_type.minimum), (parameter.maximum, 10,
+                                                                                  data_type.maximum)):
+        if _is_number(value):
+            bounds.append(value)
+        elif not _written(entry, index) and type_bound is not None:
+            bounds.append(type_bound)
+        else:
+            return None
+    return bounds[0], bounds[1]
+
+
+@check
+def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
+    for parameter in ctx.device.parameters.values():
+        data_type = parameter.data_type
+        if data_type is None:
+            continue
+        rule_ = tables.min_max_rule(data_type.name)
+        if rule_.meaning == "length":
+            low, high = parameter.minimum, parameter.maximum
+            if _is_int(low) and _is_int(high) and low > high:
+                yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: minimum length {low} is greater than maximum "
+                             f"length {high}", _node(parameter.entry, 9))
+            continue
+        if rule_.meaning != "value":
+            continue
+        bounds = _bounds(parameter)
+        if bounds is None:
+            continue
+        low, high = bounds
+        if low > high:
+            yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: minimum {low} is greater than maximum {high}",
+                         _node(parameter.entry, 9))
+        elif _is_number(parameter.default) and not low <= parameter.default <= high:
+            yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: default {parameter.default} is outside {low} to {high}",
+                         _node(parameter.entry, 11))
+
+
+def _deferred(entry: Entry | None, index: int) -> bool:
+    return _written(entry, index) and entry.fields[index].raw == MODULE
+
+
+@check
+def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
+    """Table C.17: required for strings, not allowed for bit strings."""
+    for parameter in ctx.device.parameters.values():
+        if parameter.data_type is None or parameter.entry is None:
+            continue
+        entry = parameter.entry
+        presence = tables.min_max_rule(parameter.data_type.name).presence
+        name = parameter.data_type.name
+        if presence is tables.Presence.REQUIRED:
+            missing = [label for label, index in (("minimum", 9), ("maximum", 10)) if not _written(entry, index)]
+            if missing:
+                yield ctx.at(STRING_LENGTHS_MISSING, f"{parameter.keyword}: a {name} parameter shall give its "
+                             f"{' and '.join(missing)} length", _node(entry, 9) if len(entry.fields) > 9 else entry)
+        elif presence is tables.Presence.NOT_ALLOWED:
+            given = [label for label, index in (("minimum", 9), ("maximum", 10))
+                     if _written(entry, index) and not _deferred(entry, index)]
+            if given:
+                yield ctx.at(BIT_STRING_MIN_MAX, f"{parameter.keyword}: a {name} parameter shall not give a "
+                             f"{' or '.join(given)}", _node(entry, 9 if "minimum" in given else 10))
+
+
+@check
+def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
+    scaling_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports scaling")
+    for parameter in ctx.device.parameters.values():
+        entry, data_type = parameter.entry, parameter.data_type
+        if data_type is None or entry is None:
+            continue
+        if not data_type.numeric:
+            given = [spec for spec in tables.PARAM_FIELDS if spec.number in tables.NUMERIC_ONLY_PARAM_FIELDS
+                     and _written(entry, spec.number - 1) and not _deferred(entry, spec.number - 1)]
+            if given:
+                names = ", ".join(f"{spec.number} ({spec.name})" for spec in given)
+                yield ctx.at(SCALING_ON_NON_NUMERIC, f"{parameter.keyword}: a {data_type.name} parameter gives "
+                             f"field(s) {names}, which only numeric types may give", _node(entry, given[0].number - 1))
+            continue
+        if not _is_int(parameter.descriptor) or not scaling_bit.extract(parameter.descriptor):
+            continue  # Figure C.8 writes 0s for scaling that is not used
+        scaling = parameter.scaling
+        for label, value, index in (("multiplier", scaling.multiplier, 12), ("divisor", scaling.divisor, 13),
+                                    ("base", scaling.base, 14)):
+            if value == 0 and _is_int(value):
+                yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling {label} is 0 but the descriptor says "
+                             "scaling is supported", _node(entry, index))
+
+
+def _expected_data_size(data_type: tables.DataType) -> int | None:
+    """Table C.14: the type's size, or bytes per character / path entry; None when any N fits (STRINGN)."""
+    return data_type.size if data_type.size is not None else data_type.char_size
+
+
+@check
+def parameter_data_sizes(ctx: Context) -> Iterator[Diagnostic]:
+    for parameter in ctx.device.parameters.values():
+        data_type, size = parameter.data_type, parameter.data_size
+        if data_type is None or not _is_int(size):
+            continue
+        expected = _expected_data_size(data_type)
+        if expected is not None and size != expected:
+            unit = "bytes" if data_type.size is not None else "bytes per character or entry"
+            yield ctx.at(DATA_SIZE_MISMATCH, f"{parameter.keyword}: Data Size {size} but {data_type.name} is "
+                         f"{expected} {unit}", _node(parameter.entry, 5))
+
+
+@check
+def enum_descriptor_bits(ctx: Context) -> Iterator[Diagnostic]:
+    enum_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports enumerated strings")
+    for parameter in ctx.device.parameters.values():
+        if parameter.enum and _is_int(parameter.descriptor) and not enum_bit.extract(parameter.descriptor):
+            yield ctx.at(ENUM_WITHOUT_DESCRIPTOR_BIT, f"{parameter.keyword} has an enumeration but descriptor "
+                         f"0x{parameter.descriptor:04X} does not set bit 1", _node(parameter.entry, 3))
+
+
+# --- assemblies ------------------------------------------------------------------------
+
+
+def _member_bits(assembly: Assembly, member: AssemblyMember) -> int | None:
+    """A member's size in bits; an empty Member Size takes the referenced
+    Param's Data Size or Assem's Size (in bytes) times 8. None when unknown."""
+    if _is_int(member.size):
+        return member.size
+    if _written(assembly.entry, member.field_index):
+        return None  # written but not convertible: EDS1xx says why
+    target = member.reference.target if isinstance(member.reference, Reference) else None
+    if isinstance(target, Parameter) and _is_int(target.data_size):
+        return target.data_size * 8
+    if isinstance(target, Assembly) and _is_int(target.size):
+        return target.size * 8
+    return None
+
+
+@check
+def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
+    for assembly in ctx.device.assemblies.values():
+        entry = assembly.entry
+        total: int | None = 0
+        for member in assembly.members:
+            reference_index = member.field_index + 1
+            if entry is not None and not _written(entry, member.field_index) and member.is_pad \
+                    and not _written(entry, reference_index):
+                yield ctx.at(EMPTY_MEMBER, f"{assembly.keyword}: member at field {member.field_index + 1} has "
+                             "neither a Member Size nor a Member Reference", _node(entry, member.field_index))
+                total = None
+                continue
+            if member.reference == MODULE:
+                yield ctx.at(MODULE_IN_MEMBER, f"{assembly.keyword}: 'Module' is not allowed as a Member Reference; "
+                             "use ModuleMemberList in place of the pair", _node(entry, reference_index))
+            bits = _member_bits(assembly, member)
+            total = total + bits if total is not None and bits is not None else None
+        if total is None or assembly.module_member_list or not assembly.members:
+            continue
+        if _is_int(assembly.size):
+            if assembly.size * 8 != total:
+                yield ctx.at(ASSEMBLY_SIZE_MISMATCH, f"{assembly.keyword}: Size is {assembly.size} bytes "
+                             f"({assembly.size * 8} bits) but the members add up to {total} bits", _node(entry, 2))
+        elif not _written(entry, 2) and total % 8:
+            yield ctx.at(ASSEMBLY_NOT_WHOLE_BYTES, f"{assembly.keyword}: the members add up to {total} bits, not a "
+                         "whole number of bytes", entry)
+
+
+def _nested_assemblies(assembly: Assembly) -> Iterator[tuple[AssemblyMember, Assembly]]:
+    for member in assembly.members:
+        if isinstance(member.reference, Reference) and isinstance(member.reference.target, Assembly):
+            yield member, member.reference.target
+
+
+@check
+def assembly_nesting(ctx: Context) -> Iterator[Diagnostic]:
+    for assembly in ctx.device.assemblies.values():
+        nested = list(_nested_assemblies(assembly))
+        if nested:
+            names = ", ".join(dict.fromkeys(inner.keyword for _, inner in nested))
+            yield ctx.at(NESTED_ASSEMBLY, f"{assembly.keyword} has assembly member(s) {names}; the spec allows it, "
+                         "but some tools refuse nested assemblies", _node(assembly.entry, nested[0][0].field_index + 1))
+        if _contains(assembly, assembly, set()):
+            yield ctx.at(ASSEMBLY_CYCLE, f"{assembly.keyword} contains itself through its assembly members, so it "
+                         "has no finite size", assembly.entry)
+
+
+def _contains(outer: Assembly, wanted: Assembly, seen: set[str]) -> bool:
+    for _, inner in _nested_assemblies(outer):
+        if inner is wanted:
+            return True
+        if inner.keyword not in seen:
+            seen.add(inner.keyword)
+            if _contains(inner, wanted, seen):
+                return True
+    return False
+
+
+#: CIP logical segments (segment type 001): bits 0-1 give the value format,
+#: 0 = 8-bit, 1 = 16-bit, 2 = 32-bit; a padded path puts one pad byte before a
+#: 16- or 32-bit value so that every segment is a whole number of 16-bit words.
+_LOGICAL_SEGMENT_TYPE, _SEGMENT_TYPE_MASK = 0x20, 0xE0
+_LOGICAL_VALUE_BYTES = {0: 1, 1: 2, 2: 4}
+
+
+def _packed_segment(path: tuple[PathItem, ...]) -> int | None:
+    """Offset of the first logical segment written in packed form (no pad byte
+    before a 16- or 32-bit value), or None when the path is padded. Walks the
+    leading logical segments only: other segment types (data segments) end it."""
+    data = [item.byte for item in path]
+    offset = 0
+    while offset < len(data) and data[offset] is not None \
+            and data[offset] & _SEGMENT_TYPE_MASK == _LOGICAL_SEGMENT_TYPE:
+        value_bytes = _LOGICAL_VALUE_BYTES.get(data[offset] & 0x03)
+        if value_bytes is None:
+            return None  # special logical format (electronic key): not a packing question
+        if value_bytes == 1:
+            offset += 2
+            continue
+        padded_end = offset + 2 + value_bytes
+        if padded_end > len(data) or data[offset + 1] != 0:
+            return offset
+        offset = padded_end
+    return None
+
+
+@check
+def assembly_member_paths(ctx: Context) -> Iterator[Diagnostic]:
+    for assembly in ctx.device.assemblies.values():
+        for member in assembly.members:
+            if isinstance(member.reference, tuple):
+                offset = _packed_segment(member.reference)
+                if offset is not None:
+                    path = " ".join(str(item) for item in member.reference)
+                    yield ctx.at(PACKED_EPATH_MEMBER, f"{assembly.keyword}: member path \"{path}\" has a 16- or "
+                                 f"32-bit logical segment at byte {offset} without the pad byte; write the padded "
+                                 "EPATH", _node(assembly.entry, member.field_index + 1))
+
+
+@check
+def slot_masks(ctx: Context) -> Iterator[Diagnostic]:
+    masks = {keyword for pair in tables.SLOT_MASK_PAIRS for keyword in pair}
+    for assembly in ctx.device.assemblies.values():
+        used = {member.reference for member in assembly.members if isinstance(member.reference, str)}
+        for first, second in tables.SLOT_MASK_PAIRS:
+            if first in used and second in used:
+                yield ctx.at(SLOT_MASK_PAIR, f"{assembly.keyword} uses both {first} and {second}", assembly.entry)
+        for member in assembly.members:
+            if isinstance(member.reference, str) and member.reference in masks \
+                    and not _written(assembly.entry, member.field_index):
+                yield ctx.at(SLOT_MASK_WITHOUT_SIZE, f"{assembly.keyword}: {member.reference} needs a Member Size",
+                             _node(assembly.entry, member.field_index))
+
+
+# --- ports and modules -----------------------------------------------------------------
+
+
+@check
+def ports(ctx: Context) -> Iterator[Diagnostic]:
+    type_spec = tables.entry_spec("Port", "Port1").fields[0]
+    first_use: dict[int, int] = {}
+    for port in ctx.device.ports:
+        if isinstance(port.type_name, str) and port.type_name not in type_spec.choices \
+                and not (type_spec.vendor_keywords and tables.is_vendor_keyword(port.type_name)):
+            yield ctx.at(UNKNOWN_PORT_TYPE, f"Port{port.number}: port type {port.type_name!r} is not one of "
+                         f"{', '.join(type_spec.choices)} nor a <VendorID>_<keyword>", _node(port.entry, 0))
+        if _is_int(port.port_number):
+            if port.port_number in first_use:
+                yield ctx.at(DUPLICATE_PORT_NUMBER, f"Port{port.number}: port number {port.port_number} is already "
+                             f"used by Port{first_use[port.port_number]}", _node(port.entry, 3))
+            else:
+                first_use[port.port_number] = port.number
+
+
+def _modular_entry(device: Device, keyword: str) -> Entry | None:
+    section = device.eds.section("Modular") if device.eds is not None else None
+    return section.entry(keyword) if section is not None else None
+
+
+@check
+def modular(ctx: Context) -> Iterator[Diagnostic]:
+    modular = ctx.device.modular
+    if modular is None:
+        return
+    slots = modular.define_slots_in_rack
+    if _is_int(slots):
+        # A file with both DefineSlotsInRack and RackN describes a chassis with
+        # modules of its own: their legal slots are slots of that chassis.
+        for rack in modular.racks:
+            for index, slot in enumerate(rack.legal_slots):
+                if slot >= slots:
+                    yield ctx.at(LEGAL_SLOT_OUT_OF_RANGE, f"Rack{rack.number}: legal slot {slot} is beyond the "
+                                 f"{slots} slots (0 to {slots - 1}) of DefineSlotsInRack", _node(rack.entry, 8 + index))
+    if modular.width == 0:
+        yield ctx.at(WIDTH_ZERO, "Width is 0; a module consumes at least one slot", _modular_entry(ctx.device, "Width"))
+    if modular.query is not None:
+        query_spec = tables.entry_spec("Modular", "Query")
+        entry = _modular_entry(ctx.device, "Query")
+        service_spec, size_spec = query_spec.fields[1], query_spec.fields[2]
+        if _is_int(modular.query.service) and modular.query.service not in service_spec.choices:
+            yield ctx.at(QUERY_FIELD_VALUE, f"Query: service {modular.query.service} is neither 1 (Get_Attributes_All)"
+                         " nor 14 (Get_Attribute_Single)", _node(entry, 1))
+        low, high = size_spec.value_range
+        if _is_int(modular.query.id_size) and not low <= modular.query.id_size <= high:
+            yield ctx.at(QUERY_FIELD_VALUE, f"Query: ID size {modular.query.id_size} is outside {low} to {high}",
+                         _node(entry, 2))

@@ -98,21 +98,16 @@ def test_json_format_several_files_is_a_list(files):
 # --- in process, with click's CliRunner ------------------------------------------------------------
 
 @pytest.mark.parametrize("name, code", [("clean", 0), ("warning", 0), ("broken", 1), ("missing", 2)])
-def test_cli_runner_return_codes(files, name, code):
-    result = CliRunner().invoke(cli, ["parse", str(files[name])], standalone_mode=False)
-    assert result.exception is None
-    assert result.return_value == code
+def test_cli_runner_exit_codes(files, name, code):
+    result = CliRunner().invoke(cli, ["parse", str(files[name])])
+    assert result.exit_code == code, result.output
+    assert not isinstance(result.exception, Exception) or isinstance(result.exception, SystemExit)
     if name == "broken":
-        assert all(LINE.match(line) for line in result.output.splitlines())
+        lines = result.output.splitlines()
+        assert len(lines) == 2 and all(LINE.match(line) for line in lines)
 
 
 def test_cli_runner_bad_option_exit_2(files):
     result = CliRunner().invoke(cli, ["parse", "--bogus", str(files["clean"])])
     assert result.exit_code == 2
     assert "--bogus" in result.output
-
-
-@pytest.mark.xfail(strict=True, reason="cli bug: the click group in standalone mode drops the subcommand's "
-                   "return value, so only edsconv.cli.main() maps findings to exit code 1")
-def test_cli_runner_standalone_exit_code_for_findings(files):
-    assert CliRunner().invoke(cli, ["parse", str(files["broken"])]).exit_code == 1

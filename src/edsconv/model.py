@@ -302,10 +302,11 @@ class Modular:
 
 @dataclass(slots=True)
 class GenericEntry:
-    """An entry the 2003 text does not define, kept with its plain values.
+    """An entry the 2003 text does not define, kept with its values as written.
 
-    Values: None (empty), str (a string's text, or a scalar's spelling), or a
-    list for a brace group.
+    Values: None (an empty field), a syntax ``Scalar`` or ``String`` (their
+    spelling, so that a keyword and a string with the same text stay apart),
+    or a list of values for a brace group. Comments are not part of it.
     """
 
     keyword: str

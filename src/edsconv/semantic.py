@@ -69,6 +69,13 @@ def plain(value: Value | None):
     return value.raw
 
 
+def as_written(value: Value | None):
+    """A syntax value without positions or comments: Scalar, String, None, or a list for a group."""
+    if isinstance(value, Group):
+        return [as_written(f.value) for f in value.fields]
+    return value
+
+
 class _Builder:
     def __init__(self, eds: EdsFile) -> None:
         self.eds = eds
@@ -162,7 +169,7 @@ class _Builder:
 
     @staticmethod
     def generic(entry: Entry) -> GenericEntry:
-        return GenericEntry(entry.keyword, [plain(f.value) for f in entry.fields], entry)
+        return GenericEntry(entry.keyword, [as_written(f.value) for f in entry.fields], entry)
 
     def single(self, entry: Entry, spec: tables.EntrySpec) -> Any:
         return self.value(entry, 0, spec.fields[0].eds_type)

@@ -1,1 +1,407 @@
-"""Checks of the file's structure: sections, entries, keywords, identity (C.4.1.2, C.4.1.4, C.4.2)."""
+"""Checks of the file's structure: sections, entries, keywords, identity (C.4.1.2, C.4.1.4, C.4.2).
+
+Every check here is driven by :mod:`edsconv.spec_tables`: which sections and
+entries are required, where they go, how many fields an entry has, which fields
+are required, reserved or limited to a list of keywords. The spec's tables are
+those of ISO 15745-4:2003; real files use sections, entries and keywords that
+later CIP editions added, so whatever the 2003 text does not define is reported
+as information and kept, never as an error.
+
+Every EDS is checked against the EtherNet/IP table (Table C.27) as well as the
+common one (Table C.3): edsconv targets EtherNet/IP, and the engineering tools
+that import EDS files for EtherNet/IP reject a file without a [Device
+Classification] naming EtherNetIP.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from edsconv import spec_tables as tables
+from edsconv.checks import Context, check
+from edsconv.diagnostics import Diagnostic, Rule, Severity, rule
+from edsconv.semantic import iter_references
+from edsconv.syntax import Entry, Field, Scalar, Section, String
+
+ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
+REQUIRED, RESERVED = tables.Presence.REQUIRED, tables.Presence.RESERVED
+
+MISSING_SECTION = rule("EDS201", ERROR, "C.4.1.2.1", "A required section ([File], [Device], [Device Classification]) "
+                       "is missing", import_blocking=True)
+SECTION_PLACEMENT = rule("EDS202", ERROR, "C.4.1.2.1", "[File] is not the first section, or [Device] does not "
+                         "immediately follow it")
+VENDOR_SECTION_NOT_LAST = rule("EDS203", ERROR, "C.4.1.2.2.7",
+                               "A vendor-specific section stands before a section the spec defines")
+FORWARD_REFERENCE = rule("EDS204", WARNING, "C.4.1.2.1", "An entry refers to an entry of a section placed later")
+NOT_ETHERNETIP = rule("EDS205", ERROR, "C.4.2.2.1", "No ClassN entry classifies the device as EtherNetIP",
+                      import_blocking=True)
+MISSING_ENTRY = rule("EDS206", ERROR, "C.4.1.4", "A section lacks an entry the spec requires")
+REQUIRED_FIELD_EMPTY = rule("EDS207", ERROR, "C.4.1.2.2.12", "A required field is empty or missing",
+                            import_blocking=True)
+TOO_MANY_FIELDS = rule("EDS208", ERROR, "C.4.1.2.2.12", "A single-value entry has more than one field")
+FIELDS_BEYOND_2003 = rule("EDS209", INFO, "C.4.1.2.2.12",
+                          "An entry has more fields than ISO 15745-4:2003 defines for it (kept)")
+RESERVED_FIELD_SET = rule("EDS210", WARNING, "C.4.1.2.2.12", "A reserved field is not empty")
+NOT_A_CHOICE = rule("EDS211", ERROR, "C.4.1.2.2.13", "A field holds a value outside the keywords its entry allows")
+PUBLIC_CLASS_SUBCLASSIFIED = rule("EDS212", ERROR, "C.4.1.4.4",
+                                  "A public classification (EtherNetIP, DeviceNet, ControlNet) is sub-classified")
+NUMBERING = rule("EDS213", WARNING, "C.4.1.4.4",
+                 "ClassN, GroupN, ConnectionN or RackN entries are not numbered 1, 2, 3 ... without gaps")
+MOD_TIME_WITHOUT_DATE = rule("EDS214", ERROR, "C.4.1.4.2", "ModTime is present without ModDate")
+MODIFIED_BEFORE_CREATED = rule("EDS215", WARNING, "C.4.1.4.2", "The last modification is dated before the creation")
+ICON_WITHOUT_HOME_URL = rule("EDS216", WARNING, "C.4.1.4.3", "Icon is present without a HomeURL in [File]")
+VENDOR_ID_LEADING_ZERO = rule("EDS217", ERROR, "C.4.1.2.2.11",
+                              "A vendor-specific keyword writes its vendor ID with leading zeros")
+KEYWORD_STARTS_WITH_DIGIT = rule("EDS218", ERROR, "C.4.1.2.2.10",
+                                 "A keyword starts with a digit but is not VendorID_keyword")
+KEYWORD_BEYOND_2003 = rule("EDS219", INFO, "C.4.1.2.2.9", "A keyword not defined by ISO 15745-4:2003 (kept)")
+SECTION_BEYOND_2003 = rule("EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)")
+NO_TCP_PORT = rule("EDS221", WARNING, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port")
+
+#: A vendor-specific keyword whose vendor ID has leading zeros (``0065_Foo``).
+_ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+")
+#: C.4.1.5.3: a Proxied entry only supplies the fields its Proxy entry marks "Module";
+#: its other fields are documentation and may be empty, so none is required.
+_PROXIED_FAMILIES = frozenset(spec.keyword for spec in tables.all_entries() if spec.keyword.startswith("Proxied"))
+_ETHERNETIP_SECTIONS = tuple(s for s in tables.SECTIONS.values() if s.presence_for(tables.ETHERNETIP) is REQUIRED)
+
+
+def _keyword_problem(keyword: str) -> tuple[Rule, str] | None:
+    """The rule a keyword (section, entry or field keyword) breaks, with the reason."""
+    if _ZERO_PADDED_VENDOR_KEYWORD.fullmatch(keyword):
+        vendor_id = keyword.partition("_")[0]
+        return VENDOR_ID_LEADING_ZERO, f"vendor ID {vendor_id} has leading zeros; write {int(vendor_id)}_..."
+    if keyword[:1].isdigit() and not tables.is_vendor_keyword(keyword):
+        return KEYWORD_STARTS_WITH_DIGIT, "a public keyword never starts with a digit and a vendor-specific " \
+                                          "one is VendorID_keyword"
+    return None
+
+
+def _word(field: Field) -> str | None:
+    """A scalar's spelling or a string's text; None for empty fields and brace groups."""
+    value = field.value
+    if isinstance(value, String):
+        return value.text
+    if isinstance(value, Scalar):
+        return value.raw
+    return None
+
+
+def _sections_by_name(ctx: Context) -> dict[str, list[Section]]:
+    """Every section by name, duplicates together (EDS008 reports them; their entries all count)."""
+    by_name: dict[str, list[Section]] = {}
+    for section in ctx.eds.sections:
+        by_name.setdefault(section.name, []).append(section)
+    return by_name
+
+
+def _specified_entries(ctx: Context) -> Iterator[tuple[Section, Entry, tables.EntrySpec]]:
+    """Every entry that the 2003 text defines, with its section and spec."""
+    for section in ctx.eds.sections:
+        if section.name not in tables.SECTIONS:
+            continue
+        for entry in section.entries:
+            spec = tables.entry_spec(section.name, entry.keyword)
+            if spec is not None:
+                yield section, entry, spec
+
+
+# --- sections -------------------------------------------------------------------------
+
+
+@check
+def required_sections(ctx: Context) -> Iterator[Diagnostic]:
+    """Table C.3 requires [File] and [Device]; Table C.27 adds [Device Classification]."""
+    if not ctx.eds.sections:
+        return  # EDS015 already says the file has no sections
+    present = {section.name for section in ctx.eds.sections}
+    for spec in _ETHERNETIP_SECTIONS:
+        if spec.name not in present:
+            table = "Table C.3" if spec.presence is REQUIRED else "Table C.27 (EtherNet/IP)"
+            yield ctx.at(MISSING_SECTION, f"the file has no [{spec.name}] section, which {table} requires")
+
+
+@check
+def section_placement(ctx: Context) -> Iterator[Diagnostic]:
+    """[File] is the first section, [Device] the one right after it (Table C.3 placement 1, 2)."""
+    order = [section.name for section in ctx.eds.sections]
+    placed = sorted((s for s in tables.SECTIONS.values() if s.placement), key=lambda s: s.placement)
+    for previous, spec in zip([None, *placed], placed):
+        if spec.name not in order:
+            continue  # EDS201 reports it
+        index = order.index(spec.name)
+        section = ctx.eds.sections[index]
+        if previous is None and index != 0:
+            yield ctx.at(SECTION_PLACEMENT, f"[{spec.name}] shall be the first section; [{order[0]}] stands "
+                                            f"before it", section)
+        elif previous is not None and previous.name in order and (index == 0 or order[index - 1] != previous.name):
+            yield ctx.at(SECTION_PLACEMENT, f"[{spec.name}] shall immediately follow [{previous.name}]", section)
+
+
+@check
+def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
+    """Vendor-specific sections come after every section the spec defines (C.4.1.2.2.7)."""
+    sections = ctx.eds.sections
+    for index, section in enumerate(sections):
+        if tables.section_spec(section.name) is not tables.VENDOR_SECTION:
+            continue
+        later = next((s for s in sections[index + 1:] if s.name in tables.SECTIONS), None)
+        if later is not None:
+            yield ctx.at(VENDOR_SECTION_NOT_LAST, f"vendor-specific section [{section.name}] stands before "
+                                                  f"[{later.name}] (line {later.line}); vendor sections come last",
+                         section)
+
+
+@check
+def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
+    for section in ctx.eds.sections:
+        problem = _keyword_problem(section.name)
+        if problem is not None:
+            yield ctx.at(problem[0], f"section [{section.name}]: {problem[1]}", section)
+        elif tables.section_spec(section.name) is None:
+            yield ctx.at(SECTION_BEYOND_2003, f"[{section.name}] is not a section of ISO 15745-4:2003 (kept)",
+                         section)
+
+
+@check
+def forward_references(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.2.1: sections may be in any order "provided that no forward references exist".
+
+    Reported once per pair of sections, at the first reference that points forward:
+    moving the referenced section up fixes them all.
+    """
+    section_of = {id(entry): (index, section) for index, section in enumerate(ctx.eds.sections)
+                  for entry in section.entries}
+    reported: set[tuple[int, int]] = set()
+    for reference in iter_references(ctx.device):
+        target_entry = getattr(reference.target, "entry", None)
+        if reference.entry is None or target_entry is None:
+            continue
+        source = section_of.get(id(reference.entry))
+        target = section_of.get(id(target_entry))
+        if source is None or target is None or target[0] <= source[0] or (source[0], target[0]) in reported:
+            continue
+        reported.add((source[0], target[0]))
+        fields = reference.entry.fields
+        node = fields[reference.field_index] if reference.field_index < len(fields) else reference.entry
+        yield ctx.at(FORWARD_REFERENCE, f"{reference.entry.keyword} in [{source[1].name}] refers to {reference} "
+                                        f"of [{target[1].name}], which comes later (line {target_entry.line}); "
+                                        f"place [{target[1].name}] before [{source[1].name}]", node)
+
+
+# --- entries --------------------------------------------------------------------------
+
+
+@check
+def required_entries(ctx: Context) -> Iterator[Diagnostic]:
+    """Each present section holds the entries its table marks Required (C.6, C.8, C.10, C.4.1.4.4)."""
+    for name, sections in _sections_by_name(ctx).items():
+        spec = tables.SECTIONS.get(name)
+        if spec is None:
+            continue
+        present = {entry_spec for section in sections for entry in section.entries
+                   if (entry_spec := tables.entry_spec(name, entry.keyword)) is not None}
+        for entry_spec in spec.entries:
+            if entry_spec.presence is REQUIRED and entry_spec not in present:
+                keyword = f"{entry_spec.keyword}N" if entry_spec.numbered else entry_spec.keyword
+                meaning = entry_spec.description if entry_spec.numbered else entry_spec.fields[0].name
+                where = f"Table {entry_spec.table}" if entry_spec.table else entry_spec.clause
+                yield ctx.at(MISSING_ENTRY, f"[{name}] has no {keyword} entry ({meaning}), required by {where}",
+                             sections[0])
+
+
+@check
+def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
+    """Entry keywords: vendor IDs without leading zeros, no public keyword with a leading
+    digit, and keywords the 2003 text does not define (kept, reported as information)."""
+    for section in ctx.eds.sections:
+        spec = tables.SECTIONS.get(section.name)
+        for entry in section.entries:
+            problem = _keyword_problem(entry.keyword)
+            if problem is not None:
+                yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
+            elif spec is not None and not tables.is_vendor_keyword(entry.keyword) \
+                    and spec.entry(entry.keyword) is None:
+                yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(spec, entry.keyword)} (kept)",
+                             entry)
+
+
+def _why_undefined(section: tables.SectionSpec, keyword: str) -> str:
+    family = tables.split_numbered(keyword)[0]
+    if family in tables.RESERVED_ENTRY_KEYWORDS.get(section.name, ()):
+        return f"is reserved by ISO 15745-4:2003 for future entry types of [{section.name}]"
+    elsewhere = sorted({spec.section for spec in tables.entries_named(keyword)})
+    if elsewhere:
+        return f"is defined by ISO 15745-4:2003 for [{'], ['.join(elsewhere)}], not for [{section.name}]"
+    return f"is not an entry of [{section.name}] in ISO 15745-4:2003"
+
+
+@check
+def numbering(ctx: Context) -> Iterator[Diagnostic]:
+    """ClassN, GroupN, ConnectionN, RackN: "numbers shall start at 1 ... and be incremented"."""
+    for name, sections in _sections_by_name(ctx).items():
+        families: dict[tables.EntrySpec, dict[int, Entry]] = {}
+        for section in sections:
+            for entry in section.entries:
+                spec = tables.entry_spec(name, entry.keyword)
+                if spec is not None and spec.sequential:
+                    families.setdefault(spec, {}).setdefault(tables.split_numbered(entry.keyword)[1], entry)
+        for spec, entries in families.items():
+            expected = 1
+            for number in sorted(entries):
+                if number != expected:
+                    entry = entries[number]
+                    yield ctx.at(NUMBERING, f"{entry.keyword} comes where {spec.keyword}{expected} is expected: "
+                                            f"{spec.keyword}N entries are numbered from 1 without gaps "
+                                            f"({spec.clause})", entry)
+                expected = number + 1
+
+
+# --- fields ---------------------------------------------------------------------------
+
+
+@check
+def field_counts(ctx: Context) -> Iterator[Diagnostic]:
+    """Required fields present and not empty; no fields beyond the layout; reserved fields empty."""
+    for _, entry, spec in _specified_entries(ctx):
+        missing = []
+        for field_spec in spec.fields:
+            if field_spec.presence is not REQUIRED or field_spec.repeats or spec.keyword in _PROXIED_FAMILIES:
+                continue
+            index = field_spec.number - 1
+            if index >= len(entry.fields):
+                missing.append(f"{field_spec.number} ({field_spec.name})")
+            elif entry.fields[index].value is None:
+                yield ctx.at(REQUIRED_FIELD_EMPTY, f"{entry.keyword} field {field_spec.number} "
+                                                   f"({field_spec.name}) is required but empty", entry.fields[index])
+        if missing:
+            yield ctx.at(REQUIRED_FIELD_EMPTY, f"{entry.keyword} lacks required field{'s' if len(missing) > 1 else ''}"
+                                               f" {', '.join(missing)}", entry)
+        if spec.max_fields is not None and len(entry.fields) > spec.max_fields:
+            extra = entry.fields[spec.max_fields]
+            if spec.max_fields == 1:
+                yield ctx.at(TOO_MANY_FIELDS, f"{entry.keyword} holds one value ({spec.fields[0].name}) but has "
+                                              f"{len(entry.fields)} fields", extra)
+            else:
+                yield ctx.at(FIELDS_BEYOND_2003, f"{entry.keyword} has {len(entry.fields)} fields; ISO 15745-4:2003 "
+                                                 f"defines {spec.max_fields} (later fields kept)", extra)
+        for index, item in enumerate(entry.fields):
+            field_spec = spec.field_at(index + 1)
+            if field_spec is not None and field_spec.presence is RESERVED and item.value is not None:
+                yield ctx.at(RESERVED_FIELD_SET, f"{entry.keyword} field {index + 1} is reserved and shall be "
+                                                 f"empty (Table {field_spec.table}); {item.raw or 'its value'} "
+                                                 f"is ignored", item)
+
+
+@check
+def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
+    """Fields limited to a list of keywords or values (FieldSpec.choices)."""
+    for _, entry, spec in _specified_entries(ctx):
+        for index, item in enumerate(entry.fields):
+            field_spec = spec.field_at(index + 1)
+            word = _word(item)
+            if field_spec is None or word is None or word in spec.proxy_keywords:
+                continue
+            is_keyword_field = "Keyword" in field_spec.alternatives
+            problem = _keyword_problem(word) if is_keyword_field and isinstance(item.value, Scalar) else None
+            if problem is not None:
+                yield ctx.at(problem[0], f"{entry.keyword} field {index + 1}: {word}: {problem[1]}", item)
+            elif field_spec.choices and not _is_choice(word, field_spec):
+                yield _not_a_choice(ctx, entry, index, word, field_spec, item)
+
+
+def _is_choice(word: str, field_spec: tables.FieldSpec) -> bool:
+    if word in field_spec.choices or (field_spec.vendor_keywords and tables.is_vendor_keyword(word)):
+        return True
+    try:
+        return int(word, 0) in field_spec.choices
+    except ValueError:
+        return False
+
+
+def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec: tables.FieldSpec,
+                  item: Field) -> Diagnostic:
+    allowed = ", ".join(str(choice) for choice in field_spec.choices)
+    if field_spec.vendor_keywords and isinstance(item.value, Scalar) and tables.KEYWORD_RE.fullmatch(word):
+        # An open list (vendors may add keywords): later CIP editions add public
+        # ones too, such as the Safety classification.
+        return ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} field {index + 1}: {word} is not a "
+                                           f"{field_spec.name} of ISO 15745-4:2003 ({allowed} or VendorID_keyword; "
+                                           f"kept)", item)
+    vendor = " or a VendorID_keyword" if field_spec.vendor_keywords else ""
+    return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {word!r}; allowed: "
+                                f"{allowed}{vendor}", item)
+
+
+# --- classification, identity, file description ---------------------------------------
+
+
+@check
+def ethernetip_classification(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.2.2.1: a ClassN = EtherNetIP, without sub-classification; C.4.1.4.4: public
+    classifications are never sub-classified."""
+    sections = _sections_by_name(ctx).get("Device Classification")
+    if not sections:
+        return  # EDS201 reports the missing section
+    if not ctx.device.is_ethernetip:
+        found = ", ".join(c.classification for c in ctx.device.classifications if c.classification) or "none"
+        yield ctx.at(NOT_ETHERNETIP, f"no ClassN entry is EtherNetIP (classifications: {found}); an EtherNet/IP "
+                                     f"EDS needs one", sections[0])
+    for classification in ctx.device.classifications:
+        entry = classification.entry
+        if classification.classification in tables.CLASSIFICATION_KEYWORDS and entry is not None \
+                and any(item.value is not None for item in entry.fields[1:]):
+            yield ctx.at(PUBLIC_CLASS_SUBCLASSIFIED, f"{entry.keyword}: the public classification "
+                                                     f"{classification.classification} shall not be sub-classified",
+                         entry.fields[1])
+
+
+@check
+def modification_date(ctx: Context) -> Iterator[Diagnostic]:
+    """Table C.7: ModDate is required when ModTime is present; it should not precede CreateDate."""
+    file_section = ctx.eds.section("File")
+    if file_section is None:
+        return
+    mod_date_entry = file_section.entry("ModDate")
+    mod_time_entry = file_section.entry("ModTime")
+    if mod_time_entry is not None and mod_date_entry is None:
+        yield ctx.at(MOD_TIME_WITHOUT_DATE, "ModTime is present but ModDate is not; Table C.7 requires the date "
+                                            "with the time", mod_time_entry)
+    described = ctx.device.file
+    if mod_date_entry is None or described.mod_date is None or described.create_date is None:
+        return
+    created = (described.create_date, described.create_time)
+    modified = (described.mod_date, described.mod_time)
+    same_day_earlier = created[1] is not None and modified[1] is not None and modified[1] < created[1]
+    if modified[0] < created[0] or (modified[0] == created[0] and same_day_earlier):
+        yield ctx.at(MODIFIED_BEFORE_CREATED, f"the last modification ({_when(modified)}) is before the creation "
+                                              f"({_when(created)})", mod_date_entry)
+
+
+def _when(moment: tuple) -> str:
+    date, time = moment
+    return f"{date.isoformat()} {time.isoformat()}" if time is not None else date.isoformat()
+
+
+@check
+def icon_needs_home_url(ctx: Context) -> Iterator[Diagnostic]:
+    """Table C.9: the icon's location is HomeURL's folder, so Icon "shall only be present when a HomeURL exists"."""
+    device_section = ctx.eds.section("Device")
+    icon = device_section.entry("Icon") if device_section is not None else None
+    file_section = ctx.eds.section("File")
+    if icon is not None and (file_section is None or file_section.entry("HomeURL") is None):
+        yield ctx.at(ICON_WITHOUT_HOME_URL, "Icon names a file relative to HomeURL, but [File] has no HomeURL",
+                     icon)
+
+
+@check
+def ethernetip_port(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.2.2.2: the EtherNet/IP port of a device is a PortN of type TCP."""
+    port_section = ctx.eds.section("Port")
+    if port_section is None or not ctx.device.is_ethernetip or not ctx.device.ports:
+        return
+    if not any(port.type_name == tables.ETHERNETIP_PORT_TYPE for port in ctx.device.ports):
+        types = ", ".join(sorted({port.type_name for port in ctx.device.ports if port.type_name})) or "none"
+        yield ctx.at(NO_TCP_PORT, f"the device is classified EtherNetIP but no PortN has the port type "
+                                  f"{tables.ETHERNETIP_PORT_TYPE} (port types: {types})", port_section)

@@ -29,69 +29,85 @@ from edsconv.semantic import iter_references
 from edsconv.syntax import Entry
 from edsconv.values import PathItem
 
-E, W, I = Severity.ERROR, Severity.WARNING, Severity.INFO
 
-UNDEFINED_REFERENCE = rule("EDS301", E, "C.4.1.4.8", "A ParamN, ProxyParamN, AssemN or ProxyAssemN used in the "
-                           "file is not defined", import_blocking=True)
-WRONG_PARAMETER_TYPE = rule("EDS302", E, "C.4.1.4.9.4", "A parameter named as a connection RPI, size or path value "
-                            "does not have the data type the field evaluates to")
-UNPAIRED_ENTRY = rule("EDS303", E, "C.4.1.4.6", "An EnumN, ProxyEnumN, ProxiedEnumN or ProxyParamSizeAdderN has no "
-                      "parameter with its number")
-GROUP_MEMBER_COUNT = rule("EDS304", E, "C.4.1.4.7", "A group's Number of Members differs from the members it lists")
-DUPLICATE_CONNECTION_NAME = rule("EDS305", E, "C.4.1.4.9.11", "Two connections have the same name string")
-TRIGGER_RESERVED_BITS = rule("EDS306", E, "C.4.1.4.9.2", "A trigger and transport mask sets reserved bits")
-TRANSPORT_NOT_ONE = rule("EDS307", E, "C.4.1.4.9.2", "A trigger and transport mask does not set exactly one "
-                         "transport type")
-NO_CLASS_OR_TRIGGER = rule("EDS308", E, "C.4.1.4.9.2", "A trigger and transport mask sets no class or no trigger")
-PARAMETERS_RESERVED_BITS = rule("EDS309", E, "C.4.1.4.9.3", "A connection parameters mask sets reserved bits")
-RESERVED_REAL_TIME_FORMAT = rule("EDS310", E, "C.4.1.4.9.3", "A connection uses a reserved real time transfer "
-                                 "format", import_blocking=True)
-SIZE_WITHOUT_FORMAT = rule("EDS311", E, "C.4.1.4.9.6", "A connection leaves both size and format of a direction "
-                           "empty")
-SIZE_FORMAT_MISMATCH = rule("EDS312", W, "C.4.1.4.9.5", "A connection's size differs from the size of its format "
-                            "assembly")
-PROXY_CONNECT_NAME_MODULE = rule("EDS313", E, "C.4.1.5.3.3", "A ProxyConnect's connection name is 'Module'")
-PARAM_RESERVED_BITS = rule("EDS314", W, "C.4.1.4.6", "A parameter descriptor sets reserved bits (Table C.15)")
-VALUE_ORDER = rule("EDS315", E, "C.4.1.4.6", "A parameter's minimum, maximum and default are not in order "
-                   "min <= default <= max")
-STRING_LENGTHS_MISSING = rule("EDS316", E, "C.4.1.4.6", "A string parameter does not give its minimum and maximum "
-                              "length (Table C.17)")
-BIT_STRING_MIN_MAX = rule("EDS317", W, "C.4.1.4.6", "A bit string parameter (BYTE, WORD, DWORD, LWORD) gives a "
-                          "minimum or maximum (Table C.17)")
-SCALING_ON_NON_NUMERIC = rule("EDS318", W, "C.4.1.4.6", "A parameter of a non-numeric type gives scaling, link or "
-                              "precision fields (Table C.18)")
-SCALING_ZERO = rule("EDS319", E, "C.4.1.4.6", "A parameter that supports scaling has a scaling multiplier, divisor "
-                    "or base of 0")
-DATA_SIZE_MISMATCH = rule("EDS320", E, "C.4.1.4.6", "A parameter's Data Size does not match its data type "
-                          "(Table C.14)")
-ENUM_WITHOUT_DESCRIPTOR_BIT = rule("EDS321", W, "C.4.1.4.6", "A parameter has an EnumN but its descriptor does not "
-                                   "set bit 1 (supports enumerated strings)")
-ASSEMBLY_RESERVED_BITS = rule("EDS322", W, "C.4.1.4.8", "An assembly descriptor sets reserved bits (Table C.21)")
-EMPTY_MEMBER = rule("EDS323", E, "C.4.1.4.8", "An assembly member has neither a size nor a reference")
-ASSEMBLY_SIZE_MISMATCH = rule("EDS324", E, "C.4.1.4.8", "An assembly's Size differs from the total of its member "
-                              "sizes")
-ASSEMBLY_NOT_WHOLE_BYTES = rule("EDS325", E, "C.4.1.4.8", "An assembly's members do not add up to a whole number "
-                                "of bytes")
-NESTED_ASSEMBLY = rule("EDS326", I, "C.4.1.4.8", "An assembly has another assembly as a member (nested AssemN)",
-                       import_blocking=True)
-ASSEMBLY_CYCLE = rule("EDS327", E, "C.4.1.4.8", "An assembly contains itself through its members",
-                      import_blocking=True)
-PACKED_EPATH_MEMBER = rule("EDS328", E, "C.4.1.4.8", "An assembly member path is a packed EPATH (no pad bytes)",
+UNDEFINED_REFERENCE = rule("EDS301", Severity.ERROR, "C.4.1.4.8",
+                           "A ParamN, ProxyParamN, AssemN or ProxyAssemN used in the file is not defined",
                            import_blocking=True)
-SLOT_MASK_PAIR = rule("EDS329", E, "C.4.1.5.3.2", "An assembly uses both slot mask keywords of a pair "
-                      "(InputSlotMask0 and InputSlotMask1 ...)")
-SLOT_MASK_WITHOUT_SIZE = rule("EDS330", E, "C.4.1.5.3.2", "A slot mask member has no Member Size")
-MODULE_IN_MEMBER = rule("EDS331", E, "C.4.1.5.3.2", "A ProxyAssem member reference is 'Module'")
-DUPLICATE_PORT_NUMBER = rule("EDS332", E, "C.4.1.4.10", "Two ports have the same port number")
-UNKNOWN_PORT_TYPE = rule("EDS333", E, "C.4.1.4.10", "A Port Type Name is neither a spec keyword nor a "
-                         "vendor-specific keyword")
-LEGAL_SLOT_OUT_OF_RANGE = rule("EDS334", E, "C.4.1.5.2.2", "A Rack legal slot is not a slot of the chassis "
-                               "(0 to DefineSlotsInRack - 1)")
-WIDTH_ZERO = rule("EDS335", E, "C.4.1.5.2.3", "A module's Width is 0")
-SAFETY_REAL_TIME_FORMAT = rule("EDS337", W, "C.4.1.4.9.3", "A connection uses real time format 5, reserved in "
-                               "the 2003 text and the CIP Safety format of later editions")
-QUERY_FIELD_VALUE = rule("EDS336", E, "C.4.1.5.2.4", "A Query entry has a service other than 1 or 14, or an ID "
-                         "size outside 1 to 16")
+WRONG_PARAMETER_TYPE = rule("EDS302", Severity.ERROR, "C.4.1.4.9.4",
+                            "A parameter named as a connection RPI, size or path value does not have the data type "
+                            "the field evaluates to")
+UNPAIRED_ENTRY = rule("EDS303", Severity.ERROR, "C.4.1.4.6",
+                      "An EnumN, ProxyEnumN, ProxiedEnumN or ProxyParamSizeAdderN has no parameter with its number")
+GROUP_MEMBER_COUNT = rule("EDS304", Severity.ERROR, "C.4.1.4.7",
+                          "A group's Number of Members differs from the members it lists")
+DUPLICATE_CONNECTION_NAME = rule("EDS305", Severity.ERROR, "C.4.1.4.9.11",
+                                 "Two connections have the same name string")
+TRIGGER_RESERVED_BITS = rule("EDS306", Severity.ERROR, "C.4.1.4.9.2",
+                             "A trigger and transport mask sets reserved bits")
+TRANSPORT_NOT_ONE = rule("EDS307", Severity.ERROR, "C.4.1.4.9.2",
+                         "A trigger and transport mask does not set exactly one transport type")
+NO_CLASS_OR_TRIGGER = rule("EDS308", Severity.ERROR, "C.4.1.4.9.2",
+                           "A trigger and transport mask sets no class or no trigger")
+PARAMETERS_RESERVED_BITS = rule("EDS309", Severity.ERROR, "C.4.1.4.9.3",
+                                "A connection parameters mask sets reserved bits")
+RESERVED_REAL_TIME_FORMAT = rule("EDS310", Severity.ERROR, "C.4.1.4.9.3",
+                                 "A connection uses a reserved real time transfer format", import_blocking=True)
+SIZE_WITHOUT_FORMAT = rule("EDS311", Severity.ERROR, "C.4.1.4.9.6",
+                           "A connection leaves both size and format of a direction empty")
+SIZE_FORMAT_MISMATCH = rule("EDS312", Severity.WARNING, "C.4.1.4.9.5",
+                            "A connection's size differs from the size of its format assembly")
+PROXY_CONNECT_NAME_MODULE = rule("EDS313", Severity.ERROR, "C.4.1.5.3.3",
+                                 "A ProxyConnect's connection name is 'Module'")
+PARAM_RESERVED_BITS = rule("EDS314", Severity.WARNING, "C.4.1.4.6",
+                           "A parameter descriptor sets reserved bits (Table C.15)")
+VALUE_ORDER = rule("EDS315", Severity.ERROR, "C.4.1.4.6",
+                   "A parameter's minimum, maximum and default are not in order min <= default <= max")
+STRING_LENGTHS_MISSING = rule("EDS316", Severity.ERROR, "C.4.1.4.6",
+                              "A string parameter does not give its minimum and maximum length (Table C.17)")
+BIT_STRING_MIN_MAX = rule("EDS317", Severity.WARNING, "C.4.1.4.6",
+                          "A bit string parameter (BYTE, WORD, DWORD, LWORD) gives a minimum or maximum (Table C.17)")
+SCALING_ON_NON_NUMERIC = rule("EDS318", Severity.WARNING, "C.4.1.4.6",
+                              "A parameter of a non-numeric type gives scaling, link or precision fields (Table C.18)")
+SCALING_ZERO = rule("EDS319", Severity.ERROR, "C.4.1.4.6",
+                    "A parameter that supports scaling has a scaling multiplier, divisor or base of 0")
+DATA_SIZE_MISMATCH = rule("EDS320", Severity.ERROR, "C.4.1.4.6",
+                          "A parameter's Data Size does not match its data type (Table C.14)")
+ENUM_WITHOUT_DESCRIPTOR_BIT = rule("EDS321", Severity.WARNING, "C.4.1.4.6",
+                                   "A parameter has an EnumN but its descriptor does not set bit 1 (supports "
+                                   "enumerated strings)")
+ASSEMBLY_RESERVED_BITS = rule("EDS322", Severity.WARNING, "C.4.1.4.8",
+                              "An assembly descriptor sets reserved bits (Table C.21)")
+EMPTY_MEMBER = rule("EDS323", Severity.ERROR, "C.4.1.4.8",
+                    "An assembly member has neither a size nor a reference")
+ASSEMBLY_SIZE_MISMATCH = rule("EDS324", Severity.ERROR, "C.4.1.4.8",
+                              "An assembly's Size differs from the total of its member sizes")
+ASSEMBLY_NOT_WHOLE_BYTES = rule("EDS325", Severity.ERROR, "C.4.1.4.8",
+                                "An assembly's members do not add up to a whole number of bytes")
+NESTED_ASSEMBLY = rule("EDS326", Severity.INFO, "C.4.1.4.8",
+                       "An assembly has another assembly as a member (nested AssemN)", import_blocking=True)
+ASSEMBLY_CYCLE = rule("EDS327", Severity.ERROR, "C.4.1.4.8",
+                      "An assembly contains itself through its members", import_blocking=True)
+PACKED_EPATH_MEMBER = rule("EDS328", Severity.ERROR, "C.4.1.4.8",
+                           "An assembly member path is a packed EPATH (no pad bytes)", import_blocking=True)
+SLOT_MASK_PAIR = rule("EDS329", Severity.ERROR, "C.4.1.5.3.2",
+                      "An assembly uses both slot mask keywords of a pair (InputSlotMask0 and InputSlotMask1 ...)")
+SLOT_MASK_WITHOUT_SIZE = rule("EDS330", Severity.ERROR, "C.4.1.5.3.2",
+                              "A slot mask member has no Member Size")
+MODULE_IN_MEMBER = rule("EDS331", Severity.ERROR, "C.4.1.5.3.2",
+                        "A ProxyAssem member reference is 'Module'")
+DUPLICATE_PORT_NUMBER = rule("EDS332", Severity.ERROR, "C.4.1.4.10",
+                             "Two ports have the same port number")
+UNKNOWN_PORT_TYPE = rule("EDS333", Severity.ERROR, "C.4.1.4.10",
+                         "A Port Type Name is neither a spec keyword nor a vendor-specific keyword")
+LEGAL_SLOT_OUT_OF_RANGE = rule("EDS334", Severity.ERROR, "C.4.1.5.2.2",
+                               "A Rack legal slot is not a slot of the chassis (0 to DefineSlotsInRack - 1)")
+WIDTH_ZERO = rule("EDS335", Severity.ERROR, "C.4.1.5.2.3",
+                  "A module's Width is 0")
+QUERY_FIELD_VALUE = rule("EDS336", Severity.ERROR, "C.4.1.5.2.4",
+                         "A Query entry has a service other than 1 or 14, or an ID size outside 1 to 16")
+SAFETY_REAL_TIME_FORMAT = rule("EDS337", Severity.WARNING, "C.4.1.4.9.3",
+                               "A connection uses real time format 5, reserved in the 2003 text and the CIP Safety "
+                               "format of later editions")
 
 
 def _node(entry: Entry | None, index: int):

@@ -32,6 +32,8 @@ class LazyGroup(click.Group):
         "validate": "edsconv.validate:validate_command",
         "lint": "edsconv.lint:lint_command",
         "rules": "edsconv.lint:rules_command",
+        "merge": "edsconv.merge:merge_command",
+        "show": "edsconv.show:show_command",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -139,8 +139,6 @@ def test_statement_before_an_error_is_kept(text, expected):
     assert [(s.name, [e.keyword for e in s.entries]) for s in eds.sections] == expected
 
 
-@pytest.mark.xfail(strict=True, reason="reader bug: an unclosed '{' before a section header gives EDS002 plus "
-                   "an EDS001 at the assumed ';', and the header is swallowed (B lands in [S])")
 def test_unclosed_brace_before_section_header():
     eds = edsconv.parse("[S]\nA = {1,\n[T]\nB = 2;\n")
     assert len(eds.diagnostics) == 1

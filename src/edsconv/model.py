@@ -323,6 +323,22 @@ class GenericSection:
     section: Section | None = field(default=None, compare=False, repr=False)
 
 
+@dataclass(frozen=True, slots=True)
+class CommentNote:
+    """A comment of the EDS and where it stood, so that conversions can carry it.
+
+    ``keyword`` is None for a comment of the section header; ``field`` is the
+    0-based index of the top-level field it follows, None for the entry itself;
+    ``leading`` is True for comment lines before the section or entry.
+    """
+
+    section: str
+    keyword: str | None
+    field: int | None
+    text: str
+    leading: bool = False
+
+
 @dataclass(slots=True)
 class Device:
     """Everything an EDS says about a device."""
@@ -344,6 +360,8 @@ class Device:
     extra_entries: dict[str, list[GenericEntry]] = field(default_factory=dict)
     #: sections the 2003 text does not define, in file order
     other_sections: list[GenericSection] = field(default_factory=list)
+    #: comments of the EDS; not part of the device's meaning (excluded from equality)
+    comments: list[CommentNote] = field(default_factory=list, compare=False, repr=False)
     #: the syntax model it was built from (None when built from XML)
     eds: EdsFile | None = field(default=None, compare=False, repr=False)
     diagnostics: list[Diagnostic] = field(default_factory=list, compare=False, repr=False)

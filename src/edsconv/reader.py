@@ -390,8 +390,8 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
 
     def on_error(error: UnexpectedInput) -> bool:
         """Insert a missing ';' and go on; otherwise keep what is complete and give up."""
-        if not (isinstance(error, UnexpectedToken) and "SEMICOLON" in error.expected
-                and error.token.type in ("ENTRY_START", "SECTION", "$END")):
+        if not (isinstance(error, UnexpectedToken) and error.token.type in ("ENTRY_START", "SECTION", "$END")
+                and "SEMICOLON" in error.interactive_parser.accepts()):
             _reduce_complete_statements(error)
             return False
         stack = error.interactive_parser.parser_state.value_stack
@@ -425,7 +425,7 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
                                position)
                 builder.keep_unparsed(builder.last_end, len(text))
                 return
-            resume = _resync(text, position)
+            resume = _resync(text, position, _starts_statement(error))
             builder.keep_unparsed(builder.last_end, resume)
 
 
@@ -469,10 +469,19 @@ def _error_message(error: UnexpectedInput, text: str, position: int):
     assert isinstance(error, UnexpectedToken)
     if error.token.type == "RUN" and "SEMICOLON" in error.expected:
         return MISSING_COMMA, f"a ',' is missing before {_describe(error.token)}"
-    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(set(error.expected))}"
+    # accepts() asks the parser state itself; ``expected`` is blurred by LALR's merged states.
+    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(error.interactive_parser.accepts())}"
 
 
-def _resync(text: str, position: int) -> int:
+def _starts_statement(error: UnexpectedInput) -> bool:
+    """True when the unexpected token is a section header or an entry start (an
+    unclosed brace before it): reading resumes with it rather than after it."""
+    return isinstance(error, UnexpectedToken) and error.token.type in ("SECTION", "ENTRY_START")
+
+
+def _resync(text: str, position: int, at_position: bool = False) -> int:
+    if at_position:
+        return position
     for match in _RESYNC.finditer(text, position):
         token = match.group()
         if token == ";":

@@ -20,6 +20,7 @@ from edsconv.model import (
     Assembly,
     AssemblyMember,
     Classification,
+    CommentNote,
     Connection,
     ConnectionEndpoint,
     Device,
@@ -162,10 +163,25 @@ class _Builder:
                     self.device.extra_entries.setdefault(spec.name, []).append(self.generic(entry))
                 else:
                     handler(entry, entry_spec)
+        self.collect_comments()
         self.attach_enums_and_adders()
         for ref in iter_references(self.device):
             ref.target = self.device.resolve(ref.keyword)
         return self.device
+
+    def collect_comments(self) -> None:
+        notes = self.device.comments
+        for section in self.eds.sections:
+            notes.extend(CommentNote(section.name, None, None, c.text, True) for c in section.leading_comments)
+            notes.extend(CommentNote(section.name, None, None, c.text) for c in section.comments)
+            for entry in section.entries:
+                keyword = entry.keyword
+                notes.extend(CommentNote(section.name, keyword, None, c.text, True) for c in entry.leading_comments)
+                notes.extend(CommentNote(section.name, keyword, None, c.text) for c in entry.comments)
+                for index, item in enumerate(entry.fields):
+                    # comments inside a brace group go with the group's field
+                    nested = [f.comments for f in Entry("", [item]).walk_fields()]
+                    notes.extend(CommentNote(section.name, keyword, index, c.text) for group in nested for c in group)
 
     @staticmethod
     def generic(entry: Entry) -> GenericEntry:

@@ -1,0 +1,119 @@
+"""What the XML writers and readers share: the extension namespace, the profile
+header, serialisation that validates before it writes, and atomic output.
+
+ISO 15745-4 profiles have no target namespace; what the schemas do not model
+(sections and keywords the 2003 text does not define, comments) goes into the
+schemas' ``xsd:any`` extension points as elements of :data:`EDSCONV_NAMESPACE`
+(documented in docs/mapping.md).
+"""
+
+from __future__ import annotations
+
+import datetime
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from lxml import etree
+
+from edsconv.model import Device
+
+#: Namespace of edsconv's elements in the schemas' extension points.
+EDSCONV_NAMESPACE = "urn:x-edsconv:eds-extensions:1"
+EDSCONV = "{%s}" % EDSCONV_NAMESPACE
+NSMAP = {"edsconv": EDSCONV_NAMESPACE}
+
+
+class InvalidProfile(Exception):
+    """A document edsconv produced does not validate: an internal error, never a file."""
+
+    def __init__(self, kind: str, problems: list[str]) -> None:
+        super().__init__(f"edsconv produced an invalid {kind} profile:\n" + "\n".join(problems))
+        self.kind = kind
+        self.problems = problems
+
+
+@dataclass(slots=True)
+class Header:
+    """ProfileHeader values (ISO 15745-1), derived from the EDS unless given.
+
+    - identification: ``<VendCode>-<ProdType>-<ProdCode>`` in decimal, the Identity
+      key of the device; ``-DEV`` / ``-COMM`` is appended per profile.
+    - revision: the EDS file revision ([File] Revision, ``1.0`` when absent).
+    - name: [Device] ProdName (else DescText, else the file name).
+    - source: [Device] VendName (else "edsconv").
+    - date: [File] ModDate, else CreateDate, else today.
+    """
+
+    identification: str
+    revision: str
+    name: str
+    source: str
+    date: datetime.date
+
+    @classmethod
+    def derive(cls, device: Device, fallback_name: str = "EDS") -> Header:
+        identity, file = device.identity, device.file
+        key = [v if isinstance(v, int) else 0 for v in (identity.vendor_code, identity.product_type,
+                                                         identity.product_code)]
+        date = file.mod_date or file.create_date or datetime.date.today()
+        return cls(
+            identification="-".join(str(v) for v in key),
+            revision=str(file.revision) if file.revision else "1.0",
+            name=identity.product_name or file.description or fallback_name,
+            source=identity.vendor_name or "edsconv",
+            date=date,
+        )
+
+
+def header_element(header: Header, class_id: str, technology: str, suffix: str) -> etree._Element:
+    """The ProfileHeader of one profile (ClassID Device or CommunicationNetwork)."""
+    element = etree.Element("ProfileHeader")
+    for tag, text in (("ProfileIdentification", f"{header.identification}-{suffix}"),
+                      ("ProfileRevision", header.revision), ("ProfileName", header.name),
+                      ("ProfileSource", header.source), ("ProfileClassID", class_id),
+                      ("ProfileDate", header.date.isoformat())):
+        etree.SubElement(element, tag).text = text
+    reference = etree.SubElement(element, "ISO15745Reference")
+    etree.SubElement(reference, "ISO15745Part").text = "4"
+    etree.SubElement(reference, "ISO15745Edition").text = "1"
+    etree.SubElement(reference, "ProfileTechnology").text = technology
+    return element
+
+
+def serialise(root: etree._Element, schema_kind: str) -> bytes:
+    """The document's bytes, after validating it against its schema.
+
+    ``schema_kind`` names a profile kind of :mod:`edsconv.schemas` (``cip-device``,
+    ``ethernetip-commnet``, ``eds-device-wrapper`` ...). Raises
+    :class:`InvalidProfile` with the validation report when the document is not
+    valid: that is a bug in edsconv, and no file must be written.
+    """
+    from edsconv.schemas import kind_named, load_schema
+
+    data = etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
+    schema = load_schema(kind_named(schema_kind).xsd)
+    problems = [f"{error.path}: {error.reason}" for error in schema.iter_errors(etree.fromstring(data))]
+    if problems:
+        raise InvalidProfile(schema_kind, problems)
+    return data
+
+
+def write_atomically(path: Path, data: bytes, *, force: bool = False) -> None:
+    """Write ``data`` to ``path`` through a temporary file in the same directory.
+
+    Readers never see a half-written file. Raises FileExistsError when the
+    file exists and ``force`` is false.
+    """
+    if path.exists() and not force:
+        raise FileExistsError(f"{path} exists (use --force to overwrite it)")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    descriptor, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(descriptor, "wb") as stream:
+            stream.write(data)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise

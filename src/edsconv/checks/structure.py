@@ -7,9 +7,10 @@ those of ISO 15745-4:2003; real files use sections, entries and keywords that
 later CIP editions added, so whatever the 2003 text does not define is reported
 as information and kept, never as an error.
 
-Every EDS is checked against the EtherNet/IP table (Table C.27) as well as the
-common one (Table C.3): edsconv targets EtherNet/IP, and the engineering tools
-that import EDS files for EtherNet/IP reject a file without a [Device
+Every EDS is checked against the common section table (Table C.3) and, unless
+it is recognisably the EDS of another network, against the EtherNet/IP one
+(Table C.27): edsconv targets EtherNet/IP, and the engineering tools that
+import EDS files for EtherNet/IP reject a file without a [Device
 Classification] naming EtherNetIP.
 """
 
@@ -64,7 +65,9 @@ _ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+")
 #: C.4.1.5.3: a Proxied entry only supplies the fields its Proxy entry marks "Module";
 #: its other fields are documentation and may be empty, so none is required.
 _PROXIED_FAMILIES = frozenset(spec.keyword for spec in tables.all_entries() if spec.keyword.startswith("Proxied"))
-_ETHERNETIP_SECTIONS = tuple(s for s in tables.SECTIONS.values() if s.presence_for(tables.ETHERNETIP) is REQUIRED)
+#: A section of DeviceNet EDS files only (CIP Vol 3: the I/O messages of a DeviceNet
+#: slave); those files predate [Device Classification], which Table C.3 leaves optional.
+_DEVICENET_SECTIONS = frozenset({"IO_Info"})
 
 
 def _keyword_problem(keyword: str) -> tuple[Rule, str] | None:
@@ -76,6 +79,18 @@ def _keyword_problem(keyword: str) -> tuple[Rule, str] | None:
         return KEYWORD_STARTS_WITH_DIGIT, "a public keyword never starts with a digit and a vendor-specific " \
                                           "one is VendorID_keyword"
     return None
+
+
+def _network(ctx: Context) -> str | None:
+    """The network whose section table applies: EtherNetIP unless the file is
+    classified only under another public network or is a DeviceNet EDS without
+    classification; None when it is another network's EDS."""
+    public = {c.classification for c in ctx.device.classifications} & set(tables.CLASSIFICATION_KEYWORDS)
+    if tables.ETHERNETIP in public:
+        return tables.ETHERNETIP
+    if public or (not ctx.device.classifications and any(s.name in _DEVICENET_SECTIONS for s in ctx.eds.sections)):
+        return None
+    return tables.ETHERNETIP
 
 
 def _word(field: Field) -> str | None:
@@ -116,8 +131,9 @@ def required_sections(ctx: Context) -> Iterator[Diagnostic]:
     if not ctx.eds.sections:
         return  # EDS015 already says the file has no sections
     present = {section.name for section in ctx.eds.sections}
-    for spec in _ETHERNETIP_SECTIONS:
-        if spec.name not in present:
+    network = _network(ctx)
+    for spec in tables.SECTIONS.values():
+        if spec.presence_for(network) is REQUIRED and spec.name not in present:
             table = "Table C.3" if spec.presence is REQUIRED else "Table C.27 (EtherNet/IP)"
             yield ctx.at(MISSING_SECTION, f"the file has no [{spec.name}] section, which {table} requires")
 
@@ -344,7 +360,7 @@ def ethernetip_classification(ctx: Context) -> Iterator[Diagnostic]:
     sections = _sections_by_name(ctx).get("Device Classification")
     if not sections:
         return  # EDS201 reports the missing section
-    if not ctx.device.is_ethernetip:
+    if _network(ctx) == tables.ETHERNETIP and not ctx.device.is_ethernetip:
         found = ", ".join(c.classification for c in ctx.device.classifications if c.classification) or "none"
         yield ctx.at(NOT_ETHERNETIP, f"no ClassN entry is EtherNetIP (classifications: {found}); an EtherNet/IP "
                                      f"EDS needs one", sections[0])

@@ -33,6 +33,7 @@ class LazyGroup(click.Group):
         "lint": "edsconv.lint:lint_command",
         "rules": "edsconv.lint:rules_command",
         "merge": "edsconv.merge:merge_command",
+        "show": "edsconv.show:show_command",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -34,6 +34,8 @@ class LazyGroup(click.Group):
         "rules": "edsconv.lint:rules_command",
         "merge": "edsconv.merge:merge_command",
         "show": "edsconv.show:show_command",
+        "eds2xml": "edsconv.convert:eds2xml_command",
+        "xml2eds": "edsconv.convert:xml2eds_command",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -88,13 +88,18 @@ def detect_kind(root: etree._Element) -> ProfileKind | None:
 
 def validate_file(path: Path, forced: ProfileKind | None = None) -> FileReport:
     """Validate one file; ``OSError`` propagates when it cannot be read."""
+    return read_and_validate(path, forced)[1]
+
+
+def read_and_validate(path: Path, forced: ProfileKind | None = None) -> tuple[XmlDocument | None, FileReport]:
+    """The safely parsed document (None when it is not well-formed or unsafe) and its report."""
     report = FileReport(str(path), forced)
     try:
         document = read_xml(path)
     except XmlError as error:
         report.diagnostics.append(Diagnostic.of(_XML_ERROR_RULES[type(error)], error.message,
                                                 error.line, error.column, report.path))
-        return report
+        return None, report
     root = document.tree.getroot()
     report.kind = forced or detect_kind(root)
     if report.kind is None:
@@ -109,7 +114,7 @@ def validate_file(path: Path, forced: ProfileKind | None = None) -> FileReport:
             *document.position(root), report.path))
     else:
         report.diagnostics.extend(_schema_diagnostics(document, report))
-    return report
+    return document, report
 
 
 _XML_ERROR_RULES = {XmlSyntaxError: NOT_WELL_FORMED, UnsafeXmlError: UNSAFE_XML, XmlTooLargeError: TOO_LARGE}

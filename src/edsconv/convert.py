@@ -1,0 +1,245 @@
+"""``edsconv eds2xml`` and ``edsconv xml2eds``: EDS <-> ISO 15745-4 XML profiles.
+
+eds2xml: EDS -> semantic model -> the device profile (CIP_Device_Profile.xsd)
+and the communication network profile (ENet_CommNet_Profile.xsd), or, with
+``--wrapper``, the EDS wrapper profiles that only reference the EDS (Table C.2).
+Every document is validated before anything is written, and files are written
+atomically: an invalid document is an internal error, never a file on disk.
+
+xml2eds: XML profiles -> the same semantic model -> an EDS in canonical form.
+A wrapper profile carries no device data: the EDS it references is looked up
+next to it.
+"""
+
+from __future__ import annotations
+
+import datetime
+import sys
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import click
+from lxml import etree
+
+from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
+from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.model import Device
+from edsconv.xml_common import Header, InvalidProfile, header_element, serialise, write_atomically
+
+WRAPPER_NOT_FOUND = rule("XML101", Severity.ERROR, "C.2.2.1",
+                         "The EDS a wrapper profile references is not next to it")
+NOT_A_PROFILE = rule("XML102", Severity.ERROR, "C.2.1", "The file is not a profile xml2eds can read")
+
+#: Table C.2: WrapperReference values, by the --reference option.
+WRAPPER_REFERENCES = {"fileinfo": "FILEINFO", "deviceinfo": "DEVICEINFO"}
+
+
+@dataclass(frozen=True, slots=True)
+class Output:
+    """One document to write: file name, bytes."""
+
+    name: str
+    data: bytes
+
+
+# --- eds2xml -----------------------------------------------------------------------------
+
+def profile_documents(device: Device, header: Header, stem: str) -> list[Output]:
+    """The device and communication network profiles, validated."""
+    from edsconv.xml_commnet import commnet_profile
+    from edsconv.xml_device import device_profile
+
+    return [Output(f"{stem}_device.xml", serialise(device_profile(device, header), "cip-device")),
+            Output(f"{stem}_commnet.xml", serialise(commnet_profile(device, header), "ethernetip-commnet"))]
+
+
+def wrapper_handle(device: Device, reference: str) -> etree._Element:
+    """The ExternalProfileHandle of Table C.2."""
+    handle = etree.Element("ExternalProfileHandle", WrapperReference=reference)
+    if reference == "FILEINFO":
+        values = (device.file.description or "", str(device.file.revision or ""), device.file.home_url)
+    else:
+        identity = device.identity
+        key = (identity.vendor_code, identity.product_type, identity.product_code)
+        values = (" ".join("" if v is None else str(v) for v in key),
+                  f"{identity.major_revision}.{identity.minor_revision}", identity.icon)
+    for tag, text in zip(("ProfileIdentification", "ProfileRevision", "ProfileLocation"), values):
+        if text is not None:
+            etree.SubElement(handle, tag).text = text
+    return handle
+
+
+def wrapper_documents(device: Device, header: Header, stem: str, reference: str) -> list[Output]:
+    """The EDS wrapper profiles (C.2.2, C.3.2): a header and a handle to the EDS."""
+    outputs = []
+    for class_id, suffix, kind in (("Device", "DEV", "eds-device-wrapper"),
+                                   ("CommunicationNetwork", "COMM", "eds-commnet-wrapper")):
+        root = etree.Element("ISO15745Profile")
+        root.append(header_element(header, class_id, "EDS", suffix))
+        body = etree.SubElement(root, "ProfileBody")
+        if class_id == "Device":
+            etree.SubElement(body, "DeviceFunction")  # required, content optional (C.2.2.2)
+        body.append(wrapper_handle(device, reference))
+        name = f"{stem}_device_wrapper.xml" if class_id == "Device" else f"{stem}_commnet_wrapper.xml"
+        outputs.append(Output(name, serialise(root, kind)))
+    return outputs
+
+
+def _header(device: Device, fallback: str, overrides: dict) -> Header:
+    header = Header.derive(device, fallback)
+    given = {key: value for key, value in overrides.items() if value is not None}
+    return replace(header, **given)
+
+
+def _print(diagnostics: list[Diagnostic]) -> None:
+    for diagnostic in diagnostics:
+        click.echo(diagnostic.format(), err=True)
+
+
+@click.command("eds2xml")
+@click.argument("eds_file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("-o", "--output-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("."),
+              show_default=True, help="Directory for the profiles.")
+@click.option("--wrapper", is_flag=True, help="Write the EDS wrapper profiles (C.2.2, C.3.2) instead.")
+@click.option("--reference", type=click.Choice(sorted(WRAPPER_REFERENCES)), default="fileinfo", show_default=True,
+              help="What a wrapper's ExternalProfileHandle names (Table C.2).")
+@click.option("--force", is_flag=True, help="Overwrite existing files.")
+@click.option("--profile-id", "identification", help="ProfileIdentification (default: VendCode-ProdType-ProdCode).")
+@click.option("--profile-revision", "revision", help="ProfileRevision (default: [File] Revision).")
+@click.option("--profile-name", "name", help="ProfileName (default: [Device] ProdName).")
+@click.option("--profile-source", "source", help="ProfileSource (default: [Device] VendName).")
+@click.option("--profile-date", "date", type=click.DateTime(["%Y-%m-%d"]),
+              help="ProfileDate YYYY-MM-DD (default: [File] ModDate, else CreateDate).")
+def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: str, force: bool,
+                    **overrides) -> int:
+    """Convert an EDS into ISO 15745-4 XML profiles (device + communication network)."""
+    from edsconv import analyse, load
+
+    try:
+        eds = load(eds_file)
+    except OSError as error:
+        click.echo(f"{eds_file}: cannot read: {error.strerror or error}", err=True)
+        return EXIT_USAGE
+    device, diagnostics = analyse(eds)
+    _print([d for d in diagnostics if d.severity is Severity.ERROR])
+    if isinstance(overrides["date"], datetime.datetime):
+        overrides["date"] = overrides["date"].date()
+    header = _header(device, eds_file.stem, overrides)
+    try:
+        outputs = (wrapper_documents(device, header, eds_file.stem, WRAPPER_REFERENCES[reference]) if wrapper
+                   else profile_documents(device, header, eds_file.stem))
+    except InvalidProfile as error:
+        click.echo(f"{eds_file}: internal error, nothing written: {error}", err=True)
+        return EXIT_USAGE
+    targets = [output_dir / output.name for output in outputs]
+    existing = [str(t) for t in targets if t.exists()]
+    if existing and not force:
+        click.echo(f"not overwriting {', '.join(existing)} (use --force)", err=True)
+        return EXIT_USAGE
+    for target, output in zip(targets, outputs):
+        write_atomically(target, output.data, force=True)
+        click.echo(str(target))
+    return EXIT_FINDINGS if has_errors(diagnostics) else EXIT_CLEAN
+
+
+# --- xml2eds -----------------------------------------------------------------------------
+
+def _handle_values(root: etree._Element) -> tuple[str, dict[str, str]]:
+    handle = root.find("ProfileBody/ExternalProfileHandle")
+    values = {child.tag: (child.text or "").strip() for child in handle} if handle is not None else {}
+    return (handle.get("WrapperReference", "FILEINFO") if handle is not None else "FILEINFO"), values
+
+
+def find_wrapped_eds(xml_path: Path, root: etree._Element) -> tuple[Path | None, str]:
+    """The EDS a wrapper profile references, looked up next to it, and a description of the reference."""
+    from edsconv import build, load
+
+    reference, values = _handle_values(root)
+    identification = values.get("ProfileIdentification", "")
+    revision = values.get("ProfileRevision", "")
+    location = values.get("ProfileLocation", "")
+    described = f"{reference}: identification {identification!r}, revision {revision!r}" + (
+        f", location {location!r}" if location else "")
+    candidates = sorted(p for p in xml_path.parent.iterdir() if p.suffix.lower() == ".eds")
+    if reference == "FILEINFO" and location:
+        named = xml_path.parent / location.rstrip("/").rsplit("/", 1)[-1]
+        if named.is_file():
+            return named, described
+    for candidate in candidates:
+        device = build(load(candidate))
+        if reference == "FILEINFO":
+            matches = (device.file.description == identification and str(device.file.revision or "") == revision)
+        else:
+            identity = device.identity
+            key = " ".join(str(v) for v in (identity.vendor_code, identity.product_type, identity.product_code))
+            matches = key == identification and f"{identity.major_revision}.{identity.minor_revision}" == revision
+        if matches:
+            return candidate, described
+    return None, described
+
+
+def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnostic]]:
+    """Read, validate and convert XML profiles into one Device; a wrapper resolves to its EDS."""
+    from edsconv import build, load
+    from edsconv.validate import read_and_validate
+    from edsconv.xml_commnet import read_commnet_profile
+    from edsconv.xml_device import read_device_profile
+
+    device = Device()
+    diagnostics: list[Diagnostic] = []
+    for path in paths:
+        document, report = read_and_validate(path)
+        diagnostics.extend(report.diagnostics)
+        if document is None or has_errors(report.diagnostics):
+            return None, diagnostics
+        root = document.tree.getroot()
+        kind = report.kind.name if report.kind else ""
+        if kind == "cip-device":
+            diagnostics.extend(read_device_profile(root, device))
+        elif kind == "ethernetip-commnet":
+            diagnostics.extend(read_commnet_profile(root, device))
+        elif kind in ("eds-device-wrapper", "eds-commnet-wrapper"):
+            found, described = find_wrapped_eds(path, root)
+            if found is None:
+                diagnostics.append(Diagnostic.of(WRAPPER_NOT_FOUND, f"the wrapper references an EDS ({described}); "
+                                                 f"no such EDS is next to it in {path.parent}", 1, 1, str(path)))
+                return None, diagnostics
+            eds = load(found)
+            diagnostics.extend(eds.diagnostics)
+            return build(eds), diagnostics
+        else:
+            diagnostics.append(Diagnostic.of(NOT_A_PROFILE, f"a {kind or 'unknown'} profile is not an EtherNet/IP "
+                                             "device, network or EDS wrapper profile", 1, 1, str(path)))
+            return None, diagnostics
+    return device, diagnostics
+
+
+@click.command("xml2eds")
+@click.argument("profiles", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
+@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
+              help="EDS file to write (default: standard output).")
+@click.option("--force", is_flag=True, help="Overwrite an existing output file.")
+def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool) -> int:
+    """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS."""
+    from edsconv.eds_canonical import device_to_eds
+    from edsconv.eds_writer import write
+
+    missing = [str(p) for p in profiles if not p.is_file()]
+    if missing:
+        click.echo(f"cannot read: {', '.join(missing)}", err=True)
+        return EXIT_USAGE
+    device, diagnostics = device_from_profiles(list(profiles))
+    _print(diagnostics)
+    if device is None:
+        return EXIT_FINDINGS
+    text = write(device_to_eds(device), newline="\r\n" if output else "\n")
+    if output is None:
+        sys.stdout.write(text)
+        return EXIT_FINDINGS if has_errors(diagnostics) else EXIT_CLEAN
+    try:
+        write_atomically(output, text.encode("utf-8"), force=force)
+    except FileExistsError as error:
+        click.echo(str(error), err=True)
+        return EXIT_USAGE
+    click.echo(str(output))
+    return EXIT_FINDINGS if has_errors(diagnostics) else EXIT_CLEAN

@@ -211,20 +211,24 @@ def forward_references(ctx: Context) -> Iterator[Diagnostic]:
 
 @check
 def required_entries(ctx: Context) -> Iterator[Diagnostic]:
-    """Each present section holds the entries its table marks Required (C.6, C.8, C.10, C.4.1.4.4)."""
+    """Each present section holds the entries its table marks Required (C.6, C.8, C.10, C.4.1.4.4).
+
+    One diagnostic per section, naming every missing entry: a truncated [Device]
+    is one fault, not eight.
+    """
     for name, sections in _sections_by_name(ctx).items():
         spec = tables.SECTIONS.get(name)
         if spec is None:
             continue
         present = {entry_spec for section in sections for entry in section.entries
                    if (entry_spec := tables.entry_spec(name, entry.keyword)) is not None}
-        for entry_spec in spec.entries:
-            if entry_spec.presence is REQUIRED and entry_spec not in present:
-                keyword = f"{entry_spec.keyword}N" if entry_spec.numbered else entry_spec.keyword
-                meaning = entry_spec.description if entry_spec.numbered else entry_spec.fields[0].name
-                where = f"Table {entry_spec.table}" if entry_spec.table else entry_spec.clause
-                yield ctx.at(MISSING_ENTRY, f"[{name}] has no {keyword} entry ({meaning}), required by {where}",
-                             sections[0])
+        missing = [entry_spec for entry_spec in spec.entries
+                   if entry_spec.presence is REQUIRED and entry_spec not in present]
+        if missing:
+            listed = ", ".join(f"{e.keyword}N" if e.numbered else e.keyword for e in missing)
+            where = f"Table {missing[0].table}" if missing[0].table else missing[0].clause
+            yield ctx.at(MISSING_ENTRY, f"[{name}] lacks the required entr{'ies' if len(missing) > 1 else 'y'} "
+                                        f"{listed} ({where})", sections[0])
 
 
 @check

@@ -72,10 +72,10 @@ def wrapper_handle(device: Device, reference: str) -> etree._Element:
 def wrapper_documents(device: Device, header: Header, stem: str, reference: str) -> list[Output]:
     """The EDS wrapper profiles (C.2.2, C.3.2): a header and a handle to the EDS."""
     outputs = []
-    for class_id, suffix, kind in (("Device", "DEV", "eds-device-wrapper"),
-                                   ("CommunicationNetwork", "COMM", "eds-commnet-wrapper")):
+    for class_id, suffix, kind, interface in (("Device", "DEV", "eds-device-wrapper", None),
+                                              ("CommunicationNetwork", "COMM", "eds-commnet-wrapper", "CSI")):
         root = etree.Element("ISO15745Profile")
-        root.append(header_element(header, class_id, "EDS", suffix))
+        root.append(header_element(header, class_id, "EDS", suffix, interface))
         body = etree.SubElement(root, "ProfileBody")
         if class_id == "Device":
             etree.SubElement(body, "DeviceFunction")  # required, content optional (C.2.2.2)

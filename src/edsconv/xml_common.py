@@ -67,8 +67,12 @@ class Header:
         )
 
 
-def header_element(header: Header, class_id: str, technology: str, suffix: str) -> etree._Element:
-    """The ProfileHeader of one profile (ClassID Device or CommunicationNetwork)."""
+def header_element(header: Header, class_id: str, technology: str, suffix: str,
+                   interface: str | None = None) -> etree._Element:
+    """The ProfileHeader of one profile (ClassID Device or CommunicationNetwork).
+
+    ``interface`` is the IASInterfaceType; the network profiles require ``CSI``.
+    """
     element = etree.Element("ProfileHeader")
     for tag, text in (("ProfileIdentification", f"{header.identification}-{suffix}"),
                       ("ProfileRevision", header.revision), ("ProfileName", header.name),
@@ -79,6 +83,8 @@ def header_element(header: Header, class_id: str, technology: str, suffix: str) 
     etree.SubElement(reference, "ISO15745Part").text = "4"
     etree.SubElement(reference, "ISO15745Edition").text = "1"
     etree.SubElement(reference, "ProfileTechnology").text = technology
+    if interface is not None:
+        etree.SubElement(element, "IASInterfaceType").text = interface
     return element
 
 

@@ -111,15 +111,15 @@ def _sections_by_name(ctx: Context) -> dict[str, list[Section]]:
     return by_name
 
 
-def _specified_entries(ctx: Context) -> Iterator[tuple[Section, Entry, tables.EntrySpec]]:
-    """Every entry that the 2003 text defines, with its section and spec."""
+def _specified_entries(ctx: Context) -> Iterator[tuple[Entry, tables.EntrySpec]]:
+    """Every entry that the 2003 text defines, with its spec."""
     for section in ctx.eds.sections:
         if section.name not in tables.SECTIONS:
             continue
         for entry in section.entries:
             spec = tables.entry_spec(section.name, entry.keyword)
             if spec is not None:
-                yield section, entry, spec
+                yield entry, spec
 
 
 # --- sections -------------------------------------------------------------------------
@@ -284,7 +284,7 @@ def numbering(ctx: Context) -> Iterator[Diagnostic]:
 @check
 def field_counts(ctx: Context) -> Iterator[Diagnostic]:
     """Required fields present and not empty; no fields beyond the layout; reserved fields empty."""
-    for _, entry, spec in _specified_entries(ctx):
+    for entry, spec in _specified_entries(ctx):
         missing = []
         for field_spec in spec.fields:
             if field_spec.presence is not REQUIRED or field_spec.repeats or spec.keyword in _PROXIED_FAMILIES:
@@ -317,7 +317,7 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
 @check
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
-    for _, entry, spec in _specified_entries(ctx):
+    for entry, spec in _specified_entries(ctx):
         for index, item in enumerate(entry.fields):
             field_spec = spec.field_at(index + 1)
             word = _word(item)

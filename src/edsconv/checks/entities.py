@@ -9,7 +9,6 @@ reported again here.
 
 from __future__ import annotations
 
-from collections import Counter
 from collections.abc import Iterator
 
 from edsconv import spec_tables as tables

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import datetime
 import os
+import re
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -86,6 +87,50 @@ def header_element(header: Header, class_id: str, technology: str, suffix: str,
     if interface is not None:
         etree.SubElement(element, "IASInterfaceType").text = interface
     return element
+
+
+# XML 1.0 Char production: what a text node or attribute value can hold.
+_NOT_XML_CHAR = re.compile("[^\t\n\r\u0020-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+# dt_EDS_Revision of CIPDataTypes.xsd (one digit per part, 0.0 excluded).
+_SCHEMA_REVISION = re.compile(r"[0-9]\.[1-9]|[1-9]\.[0-9]|[1-9]\.[1-9]")
+
+
+def xml_text(text: str) -> str:
+    """``text`` with every character XML 1.0 cannot hold replaced by U+FFFD."""
+    return _NOT_XML_CHAR.sub("\ufffd", text)
+
+
+def is_xml_text(text: str) -> bool:
+    """True when XML 1.0 can hold ``text`` exactly."""
+    return _NOT_XML_CHAR.search(text) is None
+
+
+def file_description_attributes(device: Device, header: Header) -> dict[str, str]:
+    """The ``ag_FileDescription`` attributes of a ProfileBody (both CIP profiles), from [File].
+
+    The schemas require DescText, CreateDate, CreateTime, Revision and
+    SpecificationConformance; where the EDS gives no value the schema can hold:
+    DescText ``""``, CreateDate the header's date, CreateTime ``00:00:00``,
+    Revision ``1.0`` (also for revisions such as ``2.11`` that dt_EDS_Revision
+    cannot spell), SpecificationConformance ``""`` (an EDS never states it).
+    ModDate, ModTime and HomeURL are written only when the EDS has them.
+    """
+    file = device.file
+    revision = str(file.revision) if file.revision else ""
+    attributes = {
+        "DescText": xml_text(file.description or ""),
+        "CreateDate": (file.create_date or header.date).isoformat(),
+        "CreateTime": (file.create_time or datetime.time(0, 0, 0)).isoformat(),
+    }
+    if file.mod_date:
+        attributes["ModDate"] = file.mod_date.isoformat()
+    if file.mod_time:
+        attributes["ModTime"] = file.mod_time.isoformat()
+    attributes["Revision"] = revision if _SCHEMA_REVISION.fullmatch(revision) else "1.0"
+    if file.home_url is not None:
+        attributes["HomeURL"] = xml_text(file.home_url)
+    attributes["SpecificationConformance"] = ""
+    return attributes
 
 
 def serialise(root: etree._Element, schema_kind: str) -> bytes:

@@ -743,6 +743,8 @@ def render(document: dict, console: Any, sections: tuple[str, ...] = ()) -> None
     if "parameters" in wanted and document["parameters"]:
         heading("Parameters")
         t = table("Keyword", "Name", "Type", "Range", "Default", "Units", "Details")
+        for column in (0, 2, 3, 4):
+            t.columns[column].no_wrap = True
         for p in document["parameters"]:
             data_type = p["data_type"]
             type_text = data_type["name"] or f"? ({_text(data_type['written'])})"

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import datetime
 import re
+import struct
 from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
@@ -154,9 +155,21 @@ def to_real(value: Value, type_name: str) -> float:
         if decimal and len(decimal["whole"]) + len(decimal["fraction"]) > limits.decimal_digits:
             raise ValueProblem(REAL_NOTATION, f"{raw} has more than {limits.decimal_digits} digits ({type_name})")
     number = float(raw)
-    if not data_type.in_range(number):
+    if not data_type.in_range(number) and not _rounds_to_single(number, data_type):
         raise ValueProblem(OUT_OF_RANGE, f"{raw} is outside the {type_name} range")
     return number
+
+
+def _rounds_to_single(number: float, data_type: tables.DataType) -> bool:
+    """True for a REAL written just beyond the largest single (``3.4028235e38``,
+    the usual 8-digit spelling): IEEE 754 rounds it to that largest finite value."""
+    if data_type.size != 4:
+        return False
+    try:
+        struct.pack("<f", number)
+    except OverflowError:
+        return False
+    return True
 
 
 _DATE = re.compile(r"(?P<month>[0-9]{1,2})-(?P<day>[0-9]{1,2})-(?P<year>[0-9]{4}|[0-9]{2})")

@@ -1,0 +1,418 @@
+"""Value conversion by the C.4.1.3 notation rules, as properties.
+
+Every legal notation of every type converts to the value it spells; illegal
+ones raise ValueProblem with the rule they break. Values come from real EDS
+text through the reader (a one-entry file), never built by hand.
+"""
+
+from __future__ import annotations
+
+import datetime
+import math
+
+import pytest
+from hypothesis import HealthCheck, assume, example, given, settings
+from hypothesis import strategies as st
+
+from edsconv import spec_tables as tables
+from edsconv.values import (
+    Revision,
+    StringIMember,
+    ValueNote,
+    ValueProblem,
+    epath_bytes,
+    to_date,
+    to_integer,
+    to_path,
+    to_real,
+    to_revision,
+    to_stringi,
+    to_time,
+)
+from tests.conftest import values
+
+SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+INTEGER_TYPES = [t for t in tables.DATA_TYPES if t.kind in ("unsigned", "signed", "bits")]
+BIT_TYPES = [t for t in INTEGER_TYPES if t.kind == "bits"]
+NON_BIT_TYPES = [t for t in INTEGER_TYPES if t.kind != "bits"]
+REAL_TYPES = [tables.DATA_TYPES_BY_NAME["REAL"], tables.DATA_TYPES_BY_NAME["LREAL"]]
+
+
+def value(text: str):
+    """The value of field text ``text``, read by the real lexer from ``[S] K = text;``."""
+    (only,) = values(f"[Section]\nKey = {text};\n")
+    return only
+
+
+def problem(convert, text: str, *args) -> ValueProblem:
+    with pytest.raises(ValueProblem) as raised:
+        convert(value(text), *args)
+    return raised.value
+
+
+def code(convert, text: str, *args) -> str:
+    return problem(convert, text, *args).rule.code
+
+
+def test_every_integer_type_is_covered():
+    assert {t.name for t in INTEGER_TYPES} == {"USINT", "UINT", "UDINT", "ULINT", "SINT", "INT", "DINT", "LINT",
+                                               "BYTE", "WORD", "DWORD", "LWORD"}
+
+
+# --- integers (C.4.1.3.7 - C.4.1.3.9) ------------------------------------------------
+
+
+@st.composite
+def typed_value(draw, types=INTEGER_TYPES):
+    data_type = draw(st.sampled_from(types))
+    edge = st.sampled_from([data_type.minimum, data_type.maximum, 0, 1, data_type.maximum - 1])
+    number = draw(st.one_of(edge, st.integers(data_type.minimum, data_type.maximum)))
+    return data_type, number
+
+
+@SETTINGS
+@given(typed_value(), st.booleans())
+def test_decimal(case, plus):
+    data_type, number = case
+    text = f"+{number}" if plus and number >= 0 else str(number)
+    assert to_integer(value(text), data_type.name) == number
+
+
+@SETTINGS
+@given(typed_value(), st.data())
+def test_hexadecimal_with_optional_leading_zeros_and_any_case(case, data):
+    data_type, number = case
+    bits = 8 * data_type.size
+    digits = format(number & ((1 << bits) - 1), "x")  # two's complement for the signed types
+    width = data.draw(st.integers(len(digits), data_type.hex_digits))
+    digits = digits.rjust(width, "0")
+    digits = "".join(data.draw(st.sampled_from([c.lower(), c.upper()])) for c in digits)
+    prefix = data.draw(st.sampled_from(["0x", "0X"]))
+    assert to_integer(value(prefix + digits), data_type.name) == number
+
+
+@SETTINGS
+@given(typed_value(BIT_TYPES), st.data())
+def test_binary_for_bit_strings(case, data):
+    data_type, number = case
+    digits = format(number, "b")
+    digits = digits.rjust(data.draw(st.integers(len(digits), data_type.binary_digits)), "0")
+    prefix = data.draw(st.sampled_from(["0b", "0B"]))
+    assert to_integer(value(prefix + digits), data_type.name) == number
+
+
+@pytest.mark.parametrize(("type_name", "text", "expected"), [
+    ("SINT", "0x80", -128), ("SINT", "0xFF", -1), ("SINT", "0x7F", 127), ("INT", "0x8000", -32768),
+    ("DINT", "0xFFFFFFFF", -1), ("LINT", "0x8000000000000000", -(1 << 63)), ("USINT", "0x000000FF", 255),
+    ("ULINT", "0xFFFFFFFFFFFFFFFF", (1 << 64) - 1), ("BYTE", "0b00000001", 1), ("INT", "-32768", -32768),
+    ("UINT", "0", 0), ("DINT", "-0", 0),
+])
+def test_integer_examples(type_name, text, expected):
+    assert to_integer(value(text), type_name) == expected
+
+
+@SETTINGS
+@given(st.sampled_from(INTEGER_TYPES), st.integers(1, 1 << 70), st.booleans())
+def test_out_of_range_decimal_is_eds102(data_type, excess, below):
+    number = data_type.minimum - excess if below else data_type.maximum + excess
+    assert code(to_integer, str(number), data_type.name) == "EDS102"
+
+
+@SETTINGS
+@given(st.sampled_from([t for t in INTEGER_TYPES if 4 * t.hex_digits > 8 * t.size]), st.data())
+def test_hex_wider_than_the_type_is_eds102(data_type, data):
+    number = data.draw(st.integers(1 << (8 * data_type.size), (1 << (4 * data_type.hex_digits)) - 1))
+    assert code(to_integer, f"0x{number:X}", data_type.name) == "EDS102"
+
+
+@SETTINGS
+@given(typed_value(), st.integers(1, 3))
+def test_leading_zeros_are_eds103(case, zeros):
+    data_type, number = case
+    sign = "-" if number < 0 else ""
+    assert code(to_integer, f"{sign}{'0' * zeros}{abs(number)}", data_type.name) == "EDS103"
+
+
+@SETTINGS
+@given(typed_value(), st.integers(1, 4))
+def test_too_many_hex_digits_are_eds104(case, extra):
+    data_type, number = case
+    digits = format(number & ((1 << (8 * data_type.size)) - 1), "X").rjust(data_type.hex_digits + extra, "0")
+    assert code(to_integer, "0x" + digits, data_type.name) == "EDS104"
+
+
+@SETTINGS
+@given(st.sampled_from(NON_BIT_TYPES), st.integers(0, 127))
+def test_binary_for_other_types_is_eds101(data_type, number):
+    assert code(to_integer, f"0b{number:b}", data_type.name) == "EDS101"
+
+
+@SETTINGS
+@given(st.sampled_from(BIT_TYPES), st.integers(1, 8))
+def test_binary_longer_than_the_bit_string_is_eds102(data_type, extra):
+    assert code(to_integer, "0b1" + "0" * (data_type.binary_digits + extra - 1), data_type.name) == "EDS102"
+
+
+@pytest.mark.parametrize("data_type", INTEGER_TYPES, ids=lambda t: t.name)
+@pytest.mark.parametrize("text", ['"12"', "1.5", "Param1", "12-01-2000", "{ 1 }"])
+def test_other_kinds_are_eds101(data_type, text):
+    assert code(to_integer, text, data_type.name) == "EDS101"
+
+
+# --- REAL / LREAL (C.4.1.3.10) -------------------------------------------------------
+
+
+@SETTINGS
+@given(st.sampled_from(REAL_TYPES), st.data())
+def test_real_integer_notation(data_type, data):
+    limits = data_type.floats
+    number = data.draw(st.integers(limits.integer_min, limits.integer_max))
+    assert to_real(value(str(number)), data_type.name) == float(number)
+
+
+@st.composite
+def fixed_notation(draw, total):
+    whole = draw(st.integers(1, total - 1))
+    fraction = draw(st.integers(0, total - whole))
+    sign = draw(st.sampled_from(["", "-", "+"]))
+    digits = st.text("0123456789", min_size=fraction, max_size=fraction)
+    first = draw(st.text("123456789", min_size=1, max_size=1))
+    rest = draw(st.text("0123456789", min_size=whole - 1, max_size=whole - 1))
+    whole_text = "0" if whole == 1 and draw(st.booleans()) else first + rest
+    return f"{sign}{whole_text}.{draw(digits)}"
+
+
+@SETTINGS
+@given(st.sampled_from(REAL_TYPES), st.data())
+def test_real_fixed_notation(data_type, data):
+    raw = data.draw(fixed_notation(data_type.floats.decimal_digits))
+    assert to_real(value(raw), data_type.name) == float(raw)
+
+
+@SETTINGS
+@given(st.sampled_from(REAL_TYPES), st.data())
+def test_real_scientific_notation(data_type, data):
+    limits = data_type.floats
+    mantissa_digits = data.draw(st.integers(1, limits.mantissa_digits))
+    mantissa = data.draw(st.text("0123456789", min_size=mantissa_digits, max_size=mantissa_digits))
+    point = data.draw(st.integers(1, mantissa_digits))
+    mantissa = mantissa[:point] + ("." + mantissa[point:] if point < mantissa_digits else "")
+    exponent = data.draw(st.integers(-30, 30))
+    e = data.draw(st.sampled_from(["e", "E"]))
+    raw = f"{data.draw(st.sampled_from(['', '-']))}{mantissa}{e}{exponent:+d}"
+    assert to_real(value(raw), data_type.name) == float(raw)
+
+
+@pytest.mark.parametrize("text", [".5", "5.", "-.25", "+1.5e-3", "1e3", "0.0", "3.4e38", "-1.0E+10"])
+def test_real_notation_examples(text):
+    assert to_real(value(text), "REAL") == float(text)
+
+
+@pytest.mark.parametrize("data_type", REAL_TYPES, ids=lambda t: t.name)
+@pytest.mark.parametrize(("word", "expected"), [("INFINITY", math.inf), ("+INFINITY", math.inf),
+                                                ("-INFINITY", -math.inf)])
+def test_real_reserved_words(data_type, word, expected):
+    assert to_real(value(word), data_type.name) == expected
+
+
+@pytest.mark.parametrize("data_type", REAL_TYPES, ids=lambda t: t.name)
+@pytest.mark.parametrize("word", ["QUIET-NAN", "SIGNAL-NAN"])
+def test_real_nan_words(data_type, word):
+    assert math.isnan(to_real(value(word), data_type.name))
+
+
+@SETTINGS
+@given(st.sampled_from(REAL_TYPES), st.integers(1, 5), st.data())
+def test_real_too_many_fixed_digits_is_eds108(data_type, extra, data):
+    total = data_type.floats.decimal_digits + extra
+    whole = data.draw(st.integers(1, total - 1))
+    raw = "1" * whole + "." + "5" * (total - whole)
+    assert code(to_real, raw, data_type.name) == "EDS108"
+
+
+@SETTINGS
+@given(st.sampled_from(REAL_TYPES), st.integers(1, 5))
+def test_real_too_many_mantissa_digits_is_eds108(data_type, extra):
+    raw = "1." + "2" * (data_type.floats.mantissa_digits + extra - 1) + "e3"
+    assert code(to_real, raw, data_type.name) == "EDS108"
+
+
+@pytest.mark.parametrize("data_type", REAL_TYPES, ids=lambda t: t.name)
+def test_real_too_many_exponent_digits_is_eds108(data_type):
+    assert code(to_real, "1.5e" + "0" * data_type.floats.exponent_digits + "1", data_type.name) == "EDS108"
+
+
+@pytest.mark.parametrize("text", ["3.4028235e38", "-3.4028235e38", "3.40282346e38"])
+def test_real_largest_single_as_usually_written(text):
+    # IEEE 754 rounds these to the largest finite single: they are REAL values
+    assert to_real(value(text), "REAL") == float(text)
+
+
+@pytest.mark.parametrize(("type_name", "text"), [("REAL", "3.4028236e38"), ("REAL", "1e39"), ("REAL", "-1E39"),
+                                                 ("LREAL", "1.8e308"), ("LREAL", "-1e309")])
+def test_real_beyond_the_range_is_eds102(type_name, text):
+    assert code(to_real, text, type_name) == "EDS102"
+
+
+@pytest.mark.parametrize("text", ['"1.5"', "0x10", "Param1"])
+def test_real_other_kinds_are_eds101(text):
+    assert code(to_real, text, "REAL") == "EDS101"
+
+
+# --- dates, times, revisions (C.4.1.3.11 - C.4.1.3.13) --------------------------------
+
+
+@SETTINGS
+@given(st.dates(datetime.date(1996, 1, 1), datetime.date(9999, 12, 31)))
+@example(datetime.date(2000, 2, 29))
+def test_every_date_in_range(date):
+    assert to_date(value(f"{date.month:02d}-{date.day:02d}-{date.year:04d}")) == date
+
+
+@SETTINGS
+@given(st.dates(datetime.date(1996, 1, 1), datetime.date(1999, 12, 31)))
+def test_two_digit_years_are_19yy(date):
+    assert to_date(value(f"{date.month:02d}-{date.day:02d}-{date.year % 100:02d}")) == date
+
+
+@SETTINGS
+@given(st.integers(13, 99) | st.just(0), st.integers(1, 28), st.integers(1996, 9999))
+def test_invalid_month_is_eds105(month, day, year):
+    assert code(to_date, f"{month:02d}-{day:02d}-{year}") == "EDS105"
+
+
+@SETTINGS
+@given(st.dates(datetime.date(1996, 1, 1), datetime.date(9999, 12, 31)), st.integers(1, 40))
+def test_invalid_day_is_eds105(date, past):
+    day = {1: 31, 3: 31, 5: 31, 7: 31, 8: 31, 10: 31, 12: 31, 4: 30, 6: 30, 9: 30, 11: 30}.get(date.month)
+    if day is None:
+        day = 29 if date.year % 4 == 0 and (date.year % 100 != 0 or date.year % 400 == 0) else 28
+    bad = day + past
+    assume(bad <= 99)
+    assert code(to_date, f"{date.month:02d}-{bad:02d}-{date.year}") == "EDS105"
+
+
+@pytest.mark.parametrize("text", ["02-29-1997", "00-10-2000", "12-00-2000", "01-01-95", "01-01-00", "1-1-123"])
+def test_date_examples_eds105(text):
+    assert code(to_date, text) == "EDS105"
+
+
+@SETTINGS
+@given(st.dates(datetime.date(1996, 1, 1), datetime.date(9999, 12, 31)), st.booleans())
+def test_one_digit_parts_are_eds114_with_the_value(date, one_digit_month):
+    assume(date.month < 10 if one_digit_month else date.day < 10)
+    month = f"{date.month}" if one_digit_month else f"{date.month:02d}"
+    day = f"{date.day:02d}" if one_digit_month else f"{date.day}"
+    note = problem(to_date, f"{month}-{day}-{date.year}")
+    assert isinstance(note, ValueNote) and note.rule.code == "EDS114" and note.value == date
+
+
+@SETTINGS
+@given(st.dates(datetime.date(1000, 1, 1), datetime.date(1995, 12, 31)))
+def test_years_before_1996_are_eds114_with_the_value(date):
+    note = problem(to_date, f"{date.month:02d}-{date.day:02d}-{date.year}")
+    assert isinstance(note, ValueNote) and note.rule.code == "EDS114" and note.value == date
+
+
+@SETTINGS
+@given(st.times())
+def test_every_time(time):
+    time = time.replace(microsecond=0)
+    assert to_time(value(f"{time.hour:02d}:{time.minute:02d}:{time.second:02d}")) == time
+
+
+@SETTINGS
+@given(st.integers(0, 99), st.integers(0, 99), st.integers(0, 99))
+def test_times_out_of_range_are_eds106(hour, minute, second):
+    assume(hour > 23 or minute > 59 or second > 59)
+    assert code(to_time, f"{hour:02d}:{minute:02d}:{second:02d}") == "EDS106"
+
+
+@pytest.mark.parametrize("text", ["1:02:03", "01:2:03", "12-00-00", '"12:00:00"'])
+def test_time_notation_problems(text):
+    assert code(to_time, text) in ("EDS106", "EDS101")
+
+
+@SETTINGS
+@given(st.integers(0, 9), st.integers(0, 9))
+def test_every_one_digit_revision(major, minor):
+    assume((major, minor) != (0, 0))
+    assert to_revision(value(f"{major}.{minor}")) == Revision(major, minor)
+
+
+def test_revision_examples():
+    assert to_revision(value("1.4")) == Revision(1, 4)
+    assert code(to_revision, "0.0") == "EDS107"
+    note = problem(to_revision, "2.11")
+    assert isinstance(note, ValueNote) and note.rule.code == "EDS115" and note.value == Revision(2, 11)
+    assert code(to_revision, "2") == "EDS107"
+    assert code(to_revision, '"1.1"') == "EDS101"
+
+
+@SETTINGS
+@given(st.integers(0, 999), st.integers(0, 999))
+def test_multi_digit_revisions_are_eds115_with_the_value(major, minor):
+    assume(major > 9 or minor > 9)
+    note = problem(to_revision, f"{major}.{minor}")
+    assert isinstance(note, ValueNote) and note.rule.code == "EDS115" and note.value == Revision(major, minor)
+
+
+# --- EPATH (C.4.1.3.6) ---------------------------------------------------------------
+
+
+@SETTINGS
+@given(st.lists(st.integers(0, 255), max_size=24), st.booleans())
+def test_epath_bytes_round_trip(data, lower):
+    text = " ".join(f"{b:02x}" if lower else f"{b:02X}" for b in data)
+    assert epath_bytes(to_path(value(f'"{text}"'))) == bytes(data)
+
+
+@pytest.mark.parametrize("text", ["2004", "20 4", "20 0G", "20 04 Param1", "20,04", "[Param1]"])
+def test_bad_epath_tokens_are_eds109(text):
+    assert code(to_path, f'"{text}"') == "EDS109"
+
+
+@SETTINGS
+@given(st.lists(st.integers(0, 255), min_size=1, max_size=8), st.sampled_from(["2", "204", "GG", "x1", "-1"]))
+def test_a_bad_token_anywhere_is_eds109(data, bad):
+    tokens = [f"{b:02X}" for b in data]
+    tokens.insert(len(tokens) // 2, bad)
+    assert code(to_path, f'"{" ".join(tokens)}"') == "EDS109"
+
+
+def test_path_references_only_where_allowed():
+    items = to_path(value('"20 04 24 [Param1] SLOT"'), allow_references=True)
+    assert [str(item) for item in items] == ["20", "04", "24", "[Param1]", "SLOT"]
+    assert epath_bytes(items) is None
+
+
+# --- STRINGI (C.4.1.3.5) -------------------------------------------------------------
+
+member = st.builds(
+    StringIMember,
+    language=st.text("abcdefghijklmnopqrstuvwxyz", min_size=3, max_size=3),
+    type_code=st.sampled_from(sorted(tables.STRINGI_STRING_TYPES)),
+    charset=st.integers(0, 65535),
+    text=st.text("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789 .,:;-_/()", max_size=20),
+)
+
+
+@SETTINGS
+@given(st.lists(member, min_size=1, max_size=4), st.booleans())
+def test_stringi_round_trip(members, hex_codes):
+    rendered = ", ".join(
+        f'{{"{m.language}", {f"0x{m.type_code:X}" if hex_codes else m.type_code}, {m.charset}, "{m.text}"}}'
+        for m in members)
+    assert to_stringi(value(f"{{{len(members)}, {rendered}}}")) == tuple(members)
+
+
+@pytest.mark.parametrize("text", [
+    '{2, {"eng", 0xD0, 4, "a"}}',             # declares 2, lists 1
+    '{1, {"en", 0xD0, 4, "a"}}',              # two-letter language code
+    '{1, {"eng", 0xC7, 4, "a"}}',             # not a string type
+    '{1, {"eng", 0xD0, 4}}',                  # three fields
+    '"eng"',                                   # not a group
+])
+def test_bad_stringi_is_eds111(text):
+    assert code(to_stringi, text) == "EDS111"

@@ -87,7 +87,11 @@ def lexicon() -> Lexicon:
     )
 
 
+@functools.lru_cache(maxsize=8192)
 def scalar_kind(raw: str) -> str:
-    """The SCALAR_KINDS name of a scalar spelling, or "" when it is no scalar."""
+    """The SCALAR_KINDS name of a scalar spelling, or "" when it is no scalar.
+
+    Cached: the same spellings ("0", "0x0000", "Param1") recur all over a file.
+    """
     match = lexicon().scalar_kind.fullmatch(raw)
     return match.lastgroup if match else ""

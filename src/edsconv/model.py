@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import datetime
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
@@ -323,8 +323,7 @@ class GenericSection:
     section: Section | None = field(default=None, compare=False, repr=False)
 
 
-@dataclass(frozen=True, slots=True)
-class CommentNote:
+class CommentNote(NamedTuple):
     """A comment of the EDS and where it stood, so that conversions can carry it.
 
     ``keyword`` is None for a comment of the section header; ``field`` is the

@@ -8,8 +8,10 @@ diagnostics on the field; the structural checks live in :mod:`edsconv.checks`.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import Any
 
 from edsconv import spec_tables as tables
@@ -50,6 +52,28 @@ _NUMBERED_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)(
 # AssemExaN: the extended assembly of CIP editions after 2003 (its size may be a
 # ParamN); real files name it where an AssemN may stand.
 _NEWER_ASSEMBLY = re.compile(r"AssemExa[1-9][0-9]*")
+
+
+@dataclass(frozen=True, slots=True)
+class _Plan:
+    """How to read a field of a FieldSpec type such as ``UDINT|ParamRef|ProxyParamRef``."""
+
+    references: tuple[re.Pattern[str], ...]
+    newer_assembly: bool
+    member_keyword: bool
+    path: bool
+    #: the value type tried last (None: the field holds only references or keywords)
+    data_type: str | None
+    names: str
+
+
+@functools.cache
+def _plan(type_name: str) -> _Plan:
+    kinds = type_name.split("|")
+    data_types = [k for k in kinds if k not in _REFERENCE and k not in ("MemberKeyword", "Empty", "EPATH")]
+    names = " or ".join(kind.removesuffix("Ref") + "N" if kind in _REFERENCE else kind for kind in kinds)
+    return _Plan(tuple(_REFERENCE[k] for k in kinds if k in _REFERENCE), "AssemRef" in kinds,
+                 "MemberKeyword" in kinds, "EPATH" in kinds, data_types[0] if data_types else None, names)
 
 
 def reference(keyword: str, entry: Entry | None = None, field_index: int = 0) -> Reference:
@@ -107,29 +131,24 @@ class _Builder:
             return None
 
     def convert(self, value: Value, type_name: str, proxy: bool, entry: Entry, index: int) -> Any:
-        kinds = type_name.split("|")
+        plan = _plan(type_name)
         if isinstance(value, Scalar) and value.kind is ValueKind.WORD:
             raw = value.raw
             if proxy and raw in (MODULE, MODULE_MEMBER_LIST):
                 return raw
-            for kind in kinds:
-                pattern = _REFERENCE.get(kind)
-                if pattern is not None and pattern.fullmatch(raw.partition(":")[0]):
-                    return reference(raw, entry, index)
-            if "AssemRef" in kinds and _NEWER_ASSEMBLY.fullmatch(raw):
+            bare = raw.partition(":")[0]
+            if any(pattern.fullmatch(bare) for pattern in plan.references) or (
+                    plan.newer_assembly and _NEWER_ASSEMBLY.fullmatch(raw)):
                 return reference(raw, entry, index)
-            if "MemberKeyword" in kinds and _MEMBER_KEYWORD.fullmatch(raw):
+            if plan.member_keyword and _MEMBER_KEYWORD.fullmatch(raw):
                 return raw
-        if isinstance(value, String) and "EPATH" in kinds:
+        if plan.path and isinstance(value, String):
             return to_path(value, allow_references=True)
-        for kind in kinds:
-            if kind in _REFERENCE or kind in ("MemberKeyword", "Empty", "EPATH"):
-                continue
-            if kind in ("ParamDataType", "Integer", "PortSpecific"):
-                return plain(value)
-            return convert(value, kind)
-        names = " or ".join(kind.removesuffix("Ref") + "N" if kind in _REFERENCE else kind for kind in kinds)
-        raise ValueProblem(WRONG_KIND, f"expected {names}, found {plain(value)!r}")
+        if plan.data_type is None:
+            raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {plain(value)!r}")
+        if plan.data_type in ("ParamDataType", "Integer", "PortSpecific"):
+            return plain(value)
+        return convert(value, plan.data_type)
 
     def fields(self, entry: Entry, spec: tables.EntrySpec, *, proxy: bool = False) -> list[Any]:
         """Every field of a fixed-layout entry converted by its FieldSpec."""
@@ -179,9 +198,10 @@ class _Builder:
                 notes.extend(CommentNote(section.name, keyword, None, c.text, True) for c in entry.leading_comments)
                 notes.extend(CommentNote(section.name, keyword, None, c.text) for c in entry.comments)
                 for index, item in enumerate(entry.fields):
-                    # comments inside a brace group go with the group's field
-                    nested = [f.comments for f in Entry("", [item]).walk_fields()]
-                    notes.extend(CommentNote(section.name, keyword, index, c.text) for group in nested for c in group)
+                    notes.extend(CommentNote(section.name, keyword, index, c.text) for c in item.comments)
+                    if isinstance(item.value, Group):  # comments inside a group go with the group's field
+                        notes.extend(CommentNote(section.name, keyword, index, c.text)
+                                     for inner in Entry("", item.value.fields).walk_fields() for c in inner.comments)
 
     @staticmethod
     def generic(entry: Entry) -> GenericEntry:

@@ -592,7 +592,9 @@ class FieldSpec:
         return tuple(self.eds_type.split("|"))
 
 
-@dataclass(frozen=True, slots=True)
+# eq=False: specs are singletons, compared and hashed by identity (value hashing
+# would walk every FieldSpec each time a spec goes into a set).
+@dataclass(frozen=True, slots=True, eq=False)
 class EntrySpec:
     keyword: str
     #: True for a family "<keyword>N" (Param1, Assem3 ...).
@@ -611,10 +613,11 @@ class EntrySpec:
     proxy_keywords: tuple[str, ...] = ()
     aliases: tuple[str, ...] = ()
     note: str = ""
+    #: the repeating tail, computed once (field_at runs for every field read)
+    repeating: tuple[FieldSpec, ...] = field(init=False, repr=False)
 
-    @property
-    def repeating(self) -> tuple[FieldSpec, ...]:
-        return tuple(f for f in self.fields if f.repeats)
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "repeating", tuple(f for f in self.fields if f.repeats))
 
     @property
     def max_fields(self) -> int | None:
@@ -638,7 +641,7 @@ class EntrySpec:
         return tail[(position - tail[0].number) % len(tail)]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class SectionSpec:
     #: The keyword between brackets: "File", "Device Classification" ...
     name: str

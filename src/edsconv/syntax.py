@@ -59,6 +59,10 @@ class ValueKind(enum.StrEnum):
     GROUP = "GROUP"
 
 
+#: ValueKind by name, without the cost of an Enum call per lookup
+_KINDS = {kind.value: kind for kind in ValueKind}
+
+
 @dataclass(slots=True)
 class Comment(Located):
     """A ``$`` comment; ``text`` is everything after the ``$`` up to the line end."""
@@ -85,7 +89,7 @@ class Scalar:
         kind = scalar_kind(self.raw)
         if not kind:
             raise ValueError(f"{self.raw!r} is not an EDS scalar")
-        return ValueKind(kind)
+        return _KINDS[kind]
 
 
 _ESCAPES = {"\\": "\\", "n": "\n", "t": "\t", "v": "\v", "b": "\b", "r": "\r", "f": "\f", "a": "\a", '"': '"', "'": "'"}

@@ -71,7 +71,7 @@ SCALING_ZERO = rule("EDS319", Severity.ERROR, "C.4.1.4.6",
                     "A parameter that supports scaling has a scaling multiplier, divisor or base of 0")
 DATA_SIZE_MISMATCH = rule("EDS320", Severity.ERROR, "C.4.1.4.6",
                           "A parameter's Data Size does not match its data type (Table C.14)")
-ENUM_WITHOUT_DESCRIPTOR_BIT = rule("EDS321", Severity.WARNING, "C.4.1.4.6",
+ENUM_WITHOUT_DESCRIPTOR_BIT = rule("EDS321", Severity.INFO, "C.4.1.4.6",
                                    "A parameter has an EnumN but its descriptor does not set bit 1 (supports "
                                    "enumerated strings)")
 ASSEMBLY_RESERVED_BITS = rule("EDS322", Severity.WARNING, "C.4.1.4.8",

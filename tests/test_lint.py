@@ -18,8 +18,12 @@ from conftest import REPO, SHARED_REAL
 from test_report import validate_sarif
 
 GOOD = (REPO / "corpus" / "examples" / "io_adapter.eds").read_bytes()
-#: DescText lacks its ';' (EDS002)
-BROKEN = b'[File]\n  DescText = "broken"\n[Device]\n  VendCode = 1;\n'
+#: the good file with DescText's ';' dropped: one EDS002, and nothing else
+_DESC_TEXT = b'DescText = "edsconv example I/O adapter"'
+BROKEN = GOOD.replace(_DESC_TEXT + b";", _DESC_TEXT)
+#: where the ';' is missing
+BROKEN_LINE = GOOD[:GOOD.index(_DESC_TEXT)].count(b"\n") + 1
+BROKEN_COLUMN = GOOD.index(_DESC_TEXT) - GOOD.rindex(b"\n", 0, GOOD.index(_DESC_TEXT)) + len(_DESC_TEXT)
 CANOPEN = b"[FileInfo]\nFileName=drive.eds\n[DeviceInfo]\nVendorName=Someone\n[1000]\nParameterName=Device type\n"
 #: only a warning: a character outside ASCII in a comment (EDS005)
 WARNS = GOOD + "$ caf\u00e9\n".encode()
@@ -78,7 +82,7 @@ def test_text_format_and_exit_codes(tmp_path: Path):
     result = run("lint", str(good), str(broken))
     assert result.return_value == 1
     (line,) = result.stdout.splitlines()
-    assert line.startswith(f"{broken}:2:22: EDS002 the entry is not ended by ';'")
+    assert line.startswith(f"{broken}:{BROKEN_LINE}:{BROKEN_COLUMN}: EDS002 the entry is not ended by ';'")
     assert line.endswith("[C.4.1.2.2.8]")
     assert result.stderr.strip() == "2 files: 1 errors, 0 warnings, 0 notes"
 
@@ -199,7 +203,8 @@ def test_sarif_and_github_from_the_command(tree: Path, monkeypatch):
     assert uris == ["m_broken.eds", "sub/n_canopen.eds"]
     github = run("lint", "--format", "github", ".")
     assert github.return_value == 1
-    assert github.stdout.splitlines()[0].startswith("::error file=m_broken.eds,line=2,col=22,title=EDS002::")
+    assert github.stdout.splitlines()[0].startswith(
+        f"::error file=m_broken.eds,line={BROKEN_LINE},col={BROKEN_COLUMN},title=EDS002::")
 
 
 def test_no_progress_bar_when_piped(tmp_path: Path):

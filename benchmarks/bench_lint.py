@@ -1,0 +1,108 @@
+"""Lint throughput: edsconv's full check against eds-pie 1.2.0's parse + validate.
+
+    python benchmarks/bench_lint.py [--repeat N] [--corpus DIR] [--json PATH]
+
+In one run, on the same files: edsconv in-process (read, semantic model, every
+check) and eds-pie's ``CIP_EDS(text)`` (its parser plus its semantic
+validation); then the whole ``edsconv lint DIR`` command, process start-up
+included, on one core (``-j1``) and on all cores. Each figure is the best of N.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+logging.basicConfig(level=logging.CRITICAL)  # before eds_pie, which logs every token at DEBUG
+from eds_pie.eds_pie import CIP_EDS  # noqa: E402
+
+import edsconv  # noqa: E402
+from edsconv.source import decode  # noqa: E402
+
+CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"
+
+
+def best_of(repeat: int, function, *arguments) -> float:
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        function(*arguments)
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def edsconv_lint(data: bytes) -> None:
+    edsconv.analyse(edsconv.parse(data))
+
+
+def eds_pie_check(text: str) -> bool:
+    """True when eds-pie read and validated the file; it raises on many real files."""
+    try:
+        CIP_EDS(text)
+    except Exception:  # noqa: BLE001 - any failure of the contender counts as one
+        return False
+    return True
+
+
+def in_process(files: list[Path], repeat: int) -> dict:
+    row = {"files": len(files), "bytes": 0, "edsconv_s": 0.0, "eds_pie_s": 0.0, "eds_pie_files": 0,
+           "eds_pie_bytes": 0, "edsconv_on_eds_pie_files_s": 0.0}
+    for path in files:
+        data = path.read_bytes()
+        text = decode(data).text
+        seconds = best_of(repeat, edsconv_lint, data)
+        row["bytes"] += len(data)
+        row["edsconv_s"] += seconds
+        if eds_pie_check(text):
+            row["eds_pie_s"] += best_of(repeat, CIP_EDS, text)
+            row["eds_pie_files"] += 1
+            row["eds_pie_bytes"] += len(data)
+            row["edsconv_on_eds_pie_files_s"] += seconds
+    return row
+
+
+def whole_command(corpus: Path, repeat: int, jobs: str | None) -> float:
+    command = [sys.executable, "-m", "edsconv", "lint", str(corpus)] + (["-j", jobs] if jobs else [])
+
+    def run() -> None:
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+
+    return best_of(repeat, run)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--corpus", type=Path, default=CORPUS)
+    parser.add_argument("--json", type=Path)
+    arguments = parser.parse_args()
+    if not arguments.corpus.is_dir():
+        sys.exit(f"no corpus at {arguments.corpus}")
+    files = sorted(p for p in arguments.corpus.iterdir() if p.suffix.lower() == ".eds")
+    row = in_process(files, arguments.repeat)
+    megabytes = row["bytes"] / 1e6
+    print(f"{row['files']} files, {megabytes:.2f} MB, best of {arguments.repeat}")
+    print(f"edsconv read+model+checks : {row['edsconv_s']:.3f} s  {row['files'] / row['edsconv_s']:.1f} files/s  "
+          f"{megabytes / row['edsconv_s']:.2f} MB/s")
+    pie_mb = row["eds_pie_bytes"] / 1e6
+    print(f"eds-pie parse+validate    : {row['eds_pie_s']:.3f} s on the {row['eds_pie_files']} files it reads "
+          f"({pie_mb:.2f} MB): {pie_mb / row['eds_pie_s']:.2f} MB/s; edsconv on the same files "
+          f"{pie_mb / row['edsconv_on_eds_pie_files_s']:.2f} MB/s, ratio "
+          f"{row['eds_pie_s'] / row['edsconv_on_eds_pie_files_s']:.2f}x")
+    row["command_one_core_s"] = whole_command(arguments.corpus, arguments.repeat, "1")
+    row["command_all_cores_s"] = whole_command(arguments.corpus, arguments.repeat, None)
+    print(f"edsconv lint DIR, -j1     : {row['command_one_core_s']:.2f} s wall")
+    print(f"edsconv lint DIR, {os.cpu_count()} cores : {row['command_all_cores_s']:.2f} s wall, speed-up "
+          f"{row['command_one_core_s'] / row['command_all_cores_s']:.2f}x")
+    if arguments.json:
+        arguments.json.write_text(json.dumps(row, indent=2))
+
+
+if __name__ == "__main__":
+    main()

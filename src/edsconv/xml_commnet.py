@@ -1,0 +1,589 @@
+"""The EtherNet/IP communication network profile (ENet_CommNet_Profile.xsd, C.3.1), both directions.
+
+:func:`commnet_profile` turns the [Connection Manager] and [Port] parts of a
+:class:`~edsconv.model.Device` into the ISO15745Profile root of a network
+profile; :func:`read_commnet_profile` fills ``device.connections`` and
+``device.ports`` back from one. ``build(eds)`` -> :func:`commnet_profile` ->
+:func:`read_commnet_profile` gives connections and ports equal to the original's.
+
+What the schema's types cannot hold exactly goes into its ``xsd:any`` extension
+points as elements of the edsconv namespace (docs/mapping.md, "Communication
+network profile"):
+
+- ``edsconv:Module field="O-T_Size"``: the field is the keyword ``Module`` (C.4.1.5.3.3);
+- ``edsconv:Empty field="Path"``: the EDS field is empty where the schema requires an element;
+- ``edsconv:Value field="O-T_Format">AssemExa3<``: the exact value where the element's type cannot
+  hold it (newer-spec references, a connection name another connection already has, characters
+  XML cannot carry: ``escaped="true"``);
+- ``edsconv:Connection`` / ``edsconv:Port``: an entry the Connection / Port elements cannot hold
+  (keyword number beyond the id pattern, a port type name that is no keyword, a repeated PortN);
+- ``edsconv:EntryOrder``: the order of the [Connection Manager] entries when it is not the
+  schema's Connection*, ProxyConnect*, ProxiedConnect*;
+- ``edsconv:Field`` / ``edsconv:Empty`` / ``edsconv:Group`` in PortSpecific: Port fields 7...;
+- ``edsconv:RequiredMinimum``: the container holds the minimum edsconv fills for an EtherNet/IP
+  device (the EDS says nothing about it), not values read from the EDS.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import Any
+
+from lxml import etree
+
+from edsconv import spec_tables as tables
+from edsconv.diagnostics import Diagnostic
+from edsconv.model import MODULE, Connection, Device, Port, Reference
+from edsconv.values import BAD_EPATH, OUT_OF_RANGE, WRONG_KIND, PathItem, ValueProblem
+from edsconv.xml_common import (
+    EDSCONV,
+    NSMAP,
+    Header,
+    file_description_attributes,
+    header_element,
+    is_xml_text,
+    xml_text,
+)
+
+#: Connection families in the order the schema's ConnectionDescriptions sequence wants them.
+FAMILIES = ("Connection", "ProxyConnect", "ProxiedConnect")
+
+_N = "[1-9][0-9]{0,4}"
+# The lexical spaces of CIPDataTypes.xsd / ENet_CommNet_Profile.xsd the writer must meet.
+_PARAM_REFERENCE = re.compile(f"(?:Proxy)?Param{_N}(?::[0-9]{{1,2}})*")  # et_ParamReference
+_ASSEM_REFERENCE = re.compile(f"(?:Proxy)?Assem{_N}")  # et_AssemReference
+_PORT_TYPE = re.compile(f"ControlNet|ControlNet_Redundant|TCP|DeviceNet|{_N}_[A-Za-z0-9][A-Za-z0-9_]*")
+_ENTRY_ID = {family: re.compile(f"{family}{_N}") for family in (*FAMILIES, "Port")}
+# What a reader accepts: every reference the model knows (AssemExaN from newer files too).
+_ANY_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
+_ANY_KEYWORD = re.compile(r"(Connection|ProxyConnect|ProxiedConnect|Port)([1-9][0-9]*)")
+_PATH_ITEM = re.compile(r"(?P<byte>[0-9A-Fa-f]{2})|\[(?P<bracketed>[A-Za-z]+[0-9]+)\]|(?P<word>[A-Za-z_][A-Za-z0-9_]*)")
+_ESCAPE = re.compile(r"\\(\\|u[0-9A-Fa-f]{4})")
+
+_UDINT_MAX, _UINT_MAX = 0xFFFFFFFF, 0xFFFF
+
+
+@dataclass(frozen=True, slots=True)
+class _Field:
+    """One element of et_ConnectionType and where the model keeps its value."""
+
+    tag: str
+    #: the ConnectionEndpoint attribute of Connection (o_to_t ...), None for the connection itself
+    endpoint: str | None
+    attribute: str
+    #: dword, rpi, size, format, text, path
+    kind: str
+
+    @property
+    def required(self) -> bool:
+        return self.kind in ("dword", "text", "path")
+
+    def get(self, connection: Connection) -> Any:
+        return getattr(getattr(connection, self.endpoint) if self.endpoint else connection, self.attribute)
+
+    def set(self, connection: Connection, value: Any) -> None:
+        setattr(getattr(connection, self.endpoint) if self.endpoint else connection, self.attribute, value)
+
+
+def _endpoint_fields(prefix: str, endpoint: str, rpi: bool) -> tuple[_Field, ...]:
+    fields = (_Field(f"{prefix}_Size", endpoint, "size", "size"),
+              _Field(f"{prefix}_Format", endpoint, "format", "format"))
+    return ((_Field(f"{prefix}_RPI", endpoint, "rpi", "rpi"),) if rpi else ()) + fields
+
+
+#: Table C.22 fields 1-15 as the elements of et_ConnectionType, in schema order.
+CONNECTION_FIELDS: tuple[_Field, ...] = (
+    _Field("Trigger_Transport", None, "trigger_transport", "dword"),
+    _Field("Connection_Parameters", None, "parameters", "dword"),
+    *_endpoint_fields("O-T", "o_to_t", True),
+    *_endpoint_fields("T-O", "t_to_o", True),
+    *_endpoint_fields("Config1", "config1", False),
+    *_endpoint_fields("Config2", "config2", False),
+    _Field("Name_String", None, "name", "text"),
+    _Field("Help_String", None, "help", "text"),
+    _Field("Path", None, "path", "path"),
+)
+_FIELDS_BY_TAG = {field.tag: field for field in CONNECTION_FIELDS}
+
+
+def _ext(tag: str, text: str | None = None, **attributes: str) -> etree._Element:
+    element = etree.Element(EDSCONV + tag, attributes, nsmap=NSMAP)
+    element.text = text
+    return element
+
+
+def _escape(text: str) -> str:
+    """``\\`` doubled and every character XML cannot hold as ``\\uXXXX`` (all are below U+10000)."""
+    return "".join(f"\\u{ord(c):04X}" if not is_xml_text(c) else "\\\\" if c == "\\" else c for c in text)
+
+
+def _unescape(text: str) -> str:
+    return _ESCAPE.sub(lambda m: "\\" if m[1] == "\\" else chr(int(m[1][1:], 16)), text)
+
+
+def _text_extension(tag: str, text: str, **attributes: str) -> etree._Element:
+    """``text`` exactly, escaped when XML cannot hold it."""
+    if is_xml_text(text):
+        return _ext(tag, text, **attributes)
+    return _ext(tag, _escape(text), escaped="true", **attributes)
+
+
+def _reference_text(reference: Reference) -> str:
+    return reference.keyword + (f":{reference.bit}" if reference.bit is not None else "")
+
+
+def _path_text(path: Iterable[PathItem]) -> str:
+    return " ".join(str(item) for item in path)
+
+
+# --- writing -------------------------------------------------------------------------------
+
+def _schema_text(field: _Field, value: Any) -> str | None:
+    """``value`` in the type of the field's element, or None when the type cannot hold it."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        if field.kind == "dword" and 0 <= value <= _UDINT_MAX:
+            return f"{value:08X}"
+        if (field.kind == "rpi" and 0 <= value <= _UDINT_MAX) or (field.kind == "size" and 0 <= value <= _UINT_MAX):
+            return str(value)
+        return None
+    if isinstance(value, Reference) and field.kind in ("rpi", "size", "format"):
+        text = _reference_text(value)
+        forms = (_PARAM_REFERENCE, _ASSEM_REFERENCE) if field.kind == "format" else (_PARAM_REFERENCE,)
+        return text if any(form.fullmatch(text) for form in forms) else None
+    return None
+
+
+def _value_extension(field: _Field, value: Any) -> etree._Element:
+    """edsconv:Value holding a value the field's element cannot."""
+    if isinstance(value, Reference):
+        return _ext("Value", _reference_text(value), field=field.tag)
+    if isinstance(value, tuple):
+        return _ext("Value", _path_text(value), field=field.tag)
+    if isinstance(value, str):
+        return _text_extension("Value", value, field=field.tag, type="string")
+    return _ext("Value", str(value), field=field.tag)
+
+
+def _field_content(field: _Field, value: Any, names: set[str], keyword: str) -> tuple[str | None, list]:
+    """The element text (None: no element) and the extension elements of one field."""
+    empty = "" if field.required else None
+    if field.kind == "text":
+        if value is None:
+            text, extensions = "", [_ext("Empty", field=field.tag)]
+        elif is_xml_text(value):
+            text, extensions = value, []
+        else:
+            text, extensions = xml_text(value), [_value_extension(field, value)]
+        if field.attribute == "name":
+            # the schema's key ConnectionName: Name_String is unique among the connections
+            unique = text
+            while unique in names:
+                unique = f"{unique} [{keyword}]".lstrip()
+            names.add(unique)
+            if unique != text and value is not None and not extensions:
+                extensions = [_value_extension(field, value)]
+            text = unique
+        return text, extensions
+    if value is None:
+        # dword: an empty hexBinary is "no value" in its own type
+        return empty, [_ext("Empty", field=field.tag)] if field.kind == "path" else []
+    if value == MODULE:
+        return empty, [_ext("Module", field=field.tag)]
+    if field.kind == "path":
+        if isinstance(value, tuple):
+            return _path_text(value), []
+        return empty, [_value_extension(field, value)]
+    text = _schema_text(field, value)
+    if text is None:
+        return empty, [_value_extension(field, value)]
+    return text, []
+
+
+def _connection_element(connection: Connection, tag: str, names: set[str]) -> etree._Element:
+    element = etree.Element(tag, id=connection.keyword)
+    extensions = []
+    for field in CONNECTION_FIELDS:
+        text, extension = _field_content(field, field.get(connection), names, connection.keyword)
+        if text is not None:
+            etree.SubElement(element, field.tag).text = text
+        extensions.extend(extension)
+    element.extend(extensions)
+    return element
+
+
+def _connection_descriptions(device: Device) -> etree._Element | None:
+    if not device.connections:
+        return None
+    descriptions = etree.Element("ConnectionDescriptions")
+    names: set[str] = set()
+    standard = {family: [c for c in device.connections.values()
+                         if c.family == family and _ENTRY_ID[family].fullmatch(c.keyword)] for family in FAMILIES}
+    written = [c.keyword for family in FAMILIES for c in standard[family]]
+    for family in FAMILIES:
+        for connection in standard[family]:
+            descriptions.append(_connection_element(connection, family, names))
+    for connection in device.connections.values():
+        if connection.keyword not in written:
+            descriptions.append(_connection_element(connection, EDSCONV + "Connection", names))
+            written.append(connection.keyword)
+    if written != list(device.connections):
+        descriptions.append(_ext("EntryOrder", " ".join(device.connections)))
+    return descriptions
+
+
+def _specific_elements(values: Iterable[Any]) -> list[etree._Element]:
+    """Port Specific fields (plain values: text, None, lists for brace groups)."""
+    elements = []
+    for value in values:
+        if value is None:
+            elements.append(_ext("Empty"))
+        elif isinstance(value, (list, tuple)):
+            group = _ext("Group")
+            group.extend(_specific_elements(value))
+            elements.append(group)
+        else:
+            elements.append(_text_extension("Field", str(value)))
+    return elements
+
+
+def _port_fits(port: Port, ids: set[str]) -> bool:
+    """True when a Port element can hold the port: its id, type name and number are in the schema's types."""
+    keyword = f"Port{port.number}"
+    return (_ENTRY_ID["Port"].fullmatch(keyword) is not None and keyword not in ids
+            and isinstance(port.type_name, str) and _PORT_TYPE.fullmatch(port.type_name) is not None
+            and isinstance(port.port_number, int) and 0 <= port.port_number <= _UINT_MAX)
+
+
+def _port_element(port: Port, tag: str, **attributes: str) -> etree._Element:
+    element = etree.Element(tag, id=f"Port{port.number}", **attributes)
+    extensions = []
+    if port.type_name is not None:
+        etree.SubElement(element, "PortTypeName").text = xml_text(port.type_name)
+        if not is_xml_text(port.type_name):
+            extensions.append(_text_extension("Value", port.type_name, field="PortTypeName"))
+    if port.name is not None:
+        etree.SubElement(element, "PortName").text = xml_text(port.name)
+        if not is_xml_text(port.name):
+            extensions.append(_text_extension("Value", port.name, field="PortName"))
+    if port.object_path is not None:
+        etree.SubElement(element, "PortObject").text = _path_text(port.object_path)
+    if port.port_number is not None:
+        etree.SubElement(element, "PortNumber").text = str(port.port_number)
+    specific = etree.SubElement(element, "PortSpecific")
+    specific.extend(_specific_elements(port.specific))
+    element.extend(extensions)
+    return element
+
+
+def _ports(device: Device) -> list[etree._Element]:
+    """Ports (when any port fits a Port element) and an edsconv:Port for each one that does not."""
+    ports = etree.Element("Ports")
+    others = []
+    ids: set[str] = set()
+    for position, port in enumerate(device.ports):
+        if _port_fits(port, ids):
+            ids.add(f"Port{port.number}")
+            ports.append(_port_element(port, "Port"))
+        else:
+            others.append(_port_element(port, EDSCONV + "Port", position=str(position)))
+    return ([ports] if len(ports) else []) + others
+
+
+# The minimum edsconv declares for an EtherNet/IP device, whose EDS says nothing
+# about these objects: what the schema fixes (attributes fixed Get/Set, services
+# fixed true), the services that make mandatory attributes readable, and
+# None/false for everything optional ("not declared", not "known absent").
+_GET, _SET, _NONE = "Get", "Set", "None"
+_REQUIRED_MINIMUM = {
+    "ConnectionManager_InstanceOperations": (
+        "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
+        ("Get_Attribute_List", "false"), ("Set_Attribute_List", "false"), ("Get_Attribute_Single", "false"),
+        ("Set_Attribute_Single", "false"), ("Forward_Close", "true"), ("Unconnected_Send", "false"),
+        ("Forward_Open", "true"), ("Get_Connection_Data", "false"), ("Search_Connection_Data", "false"),
+        ("Ex_Forward_Open", "false"), ("Get_Object_Owner", "false")),
+    "EtherNetIPLinkObject_InstanceAttributes": (
+        "Access_Rule", ("InterfaceSpeed", _GET), ("InterfaceFlags", _GET), ("PhysicalAddress", _GET),
+        ("InterfaceCounters", _NONE), ("MediaCounters", _NONE)),
+    "EtherNetIPLinkObject_InstanceOperations": (
+        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true"),
+        ("Get_and_Clear", "false")),
+    "TCPIPInterfaceObject_InstanceAttributes": (
+        "Access_Rule", ("Status", _GET), ("ConfigurationCapability", _GET), ("ConfigurationControl", _SET),
+        ("PhysicalLinkObject", _GET), ("InterfaceConfiguration", _SET), ("HostName", _SET)),
+    "TCPIPInterfaceObject_InstanceOperations": (
+        "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
+        ("Get_Attribute_Single", "true"), ("Set_Attribute_Single", "true")),
+    "EncapsulationProtocol_Operations": (
+        "SupportedService", ("NOP", "true"), ("ListServices", "true"), ("ListIdentity", "true"),
+        ("ListInterfaces", "false"), ("RegisterSession", "true"), ("UnRegisterSession", "true"),
+        ("SendRRData", "true"), ("SendUnitData", "true"), ("IndicateStatus", "false"), ("Cancel", "false")),
+    "EtherNetIPLinkObject_ClassAttributes": ("Access_Rule", ("ObjectRevision", _GET), ("MaxInstance", _GET)),
+    "EtherNetIPLinkObject_ClassOperations": (
+        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true")),
+    "TCPIPInterfaceObject_ClassAttributes": ("Access_Rule", ("ObjectRevision", _GET), ("MaxInstance", _GET)),
+    "TCPIPInterfaceObject_ClassOperations": (
+        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true")),
+}
+
+
+def _minimum(parent: etree._Element, tag: str) -> etree._Element:
+    """Container ``tag`` under ``parent`` with its required-minimum children and the marker."""
+    container = etree.SubElement(parent, tag)
+    if tag == "EncapsulationProtocol_Attributes":
+        etree.SubElement(container, "ProtocolVersion").text = "1"
+    else:
+        attribute, *children = _REQUIRED_MINIMUM[tag]
+        for child, value in children:
+            etree.SubElement(container, child, {attribute: value})
+    container.append(_ext("RequiredMinimum"))
+    return container
+
+
+def _object(parent: etree._Element, tag: str, *containers: str) -> None:
+    element = etree.SubElement(parent, tag)
+    for container in containers:
+        _minimum(element, container)
+
+
+def is_ethernetip_device(device: Device) -> bool:
+    """An EtherNet/IP device: a ClassN EtherNetIP (C.4.2.2.1) or a TCP port (C.4.2.2.2)."""
+    return device.is_ethernetip or any(p.type_name == tables.ETHERNETIP_PORT_TYPE for p in device.ports)
+
+
+def commnet_profile(device: Device, header: Header) -> etree._Element:
+    """The ISO15745Profile root of the EtherNet/IP network profile of ``device``.
+
+    Connections and ports come from the EDS; for an EtherNet/IP device the
+    Connection Manager services, the Ethernet Link, TCP/IP Interface and
+    encapsulation objects get the required minimum (marked edsconv:RequiredMinimum).
+    """
+    root = etree.Element("ISO15745Profile", nsmap=NSMAP)
+    root.append(header_element(header, "CommunicationNetwork", "EtherNet/IP", "COMM", "CSI"))
+    body = etree.SubElement(root, "ProfileBody", file_description_attributes(device, header))
+    ethernetip = is_ethernetip_device(device)
+    application = etree.SubElement(body, "ApplicationLayers")
+    manager = etree.SubElement(application, "ConnectionManager")
+    if ethernetip:
+        _minimum(manager, "ConnectionManager_InstanceOperations")
+    descriptions = _connection_descriptions(device)
+    if descriptions is not None:
+        manager.append(descriptions)
+    etree.SubElement(application, "MessageRouter")
+    transport = etree.SubElement(body, "TransportLayers")
+    if ethernetip:
+        _object(transport, "EtherNetIPLinkObject", "EtherNetIPLinkObject_InstanceAttributes",
+                "EtherNetIPLinkObject_InstanceOperations")
+        _object(transport, "TCPIPInterfaceObject", "TCPIPInterfaceObject_InstanceAttributes",
+                "TCPIPInterfaceObject_InstanceOperations")
+        _object(transport, "EncapsulationProtocol", "EncapsulationProtocol_Attributes",
+                "EncapsulationProtocol_Operations")
+    transport.extend(_ports(device))
+    if ethernetip:
+        management = etree.SubElement(body, "NetworkManagement")
+        _object(management, "NM-EtherNetIPLinkObject", "EtherNetIPLinkObject_ClassAttributes",
+                "EtherNetIPLinkObject_ClassOperations")
+        _object(management, "NM-TCPIPInterfaceObject", "TCPIPInterfaceObject_ClassAttributes",
+                "TCPIPInterfaceObject_ClassOperations")
+    etree.cleanup_namespaces(root, top_nsmap=NSMAP)
+    return root
+
+
+# --- reading -------------------------------------------------------------------------------
+
+class _Reader:
+    def __init__(self, device: Device) -> None:
+        self.device = device
+        self.diagnostics: list[Diagnostic] = []
+
+    def report(self, problem: ValueProblem, element: etree._Element) -> None:
+        line = element.sourceline or 0
+        self.diagnostics.append(Diagnostic.of(problem.rule, f"{_describe(element)}: {problem.message}",
+                                              line, 1 if line else 0))
+
+    # values
+    @staticmethod
+    def reference(text: str) -> Reference:
+        match = _ANY_REFERENCE.fullmatch(text)
+        if match is None:
+            raise ValueProblem(WRONG_KIND, f"{text!r} is neither a number nor a ParamN / AssemN reference")
+        family, number, bit = match.groups()
+        return Reference(f"{family}{number}", family, int(number), bit=int(bit) if bit is not None else None)
+
+    def number_or_reference(self, text: str) -> int | Reference:
+        text = text.strip()
+        return int(text) if text.isascii() and text.isdigit() else self.reference(text)
+
+    @staticmethod
+    def path(text: str) -> tuple[PathItem, ...]:
+        items = []
+        for token in text.split():
+            match = _PATH_ITEM.fullmatch(token)
+            name = match and (match["bracketed"] or match["word"])
+            if match and match["byte"]:
+                items.append(PathItem(byte=int(match["byte"], 16)))
+            elif name in tables.PATH_KEYWORDS:
+                items.append(PathItem(keyword=name))
+            elif name and re.fullmatch(r"(?:Proxy)?Param[1-9][0-9]*", name):
+                items.append(PathItem(reference=name))
+            else:
+                raise ValueProblem(BAD_EPATH, f"{token!r} is neither a byte, [ParamN] nor "
+                                   "SLOT / SLOT_MINUS_ONE / SYMBOL_ANSI")
+        return tuple(items)
+
+    def field_value(self, field: _Field, element: etree._Element) -> Any:
+        text = "".join(element.itertext())
+        if field.kind == "text":
+            return text
+        if field.kind == "path":
+            return self.path(text)
+        if field.kind == "dword":
+            text = "".join(text.split())
+            if not re.fullmatch(r"(?:[0-9A-Fa-f]{2}){0,4}", text):
+                raise ValueProblem(WRONG_KIND, f"{text!r} is not a DWORD in hexBinary (at most 8 hexadecimal digits)")
+            return int(text, 16) if text else None
+        return self.number_or_reference(text)
+
+    def extension_value(self, field: _Field | None, element: etree._Element) -> Any:
+        text = "".join(element.itertext())
+        if element.get("escaped") == "true":
+            text = _unescape(text)
+        if field is None or field.kind == "text" or element.get("type") == "string":
+            return text
+        if field.kind == "path":
+            return self.path(text)
+        return self.number_or_reference(text)
+
+    # connections
+    def connection(self, element: etree._Element, family: str, keyword: str, number: int) -> Connection:
+        connection = Connection(keyword, family, number)
+        for child in element:
+            if not isinstance(child.tag, str):
+                continue
+            try:
+                if child.tag in _FIELDS_BY_TAG:
+                    field = _FIELDS_BY_TAG[child.tag]
+                    field.set(connection, self.field_value(field, child))
+                elif child.tag in (EDSCONV + "Module", EDSCONV + "Empty", EDSCONV + "Value"):
+                    field = _FIELDS_BY_TAG.get(child.get("field", ""))
+                    if field is None:
+                        raise ValueProblem(WRONG_KIND, f"field {child.get('field')!r} is not a connection field")
+                    marker = etree.QName(child).localname
+                    value = MODULE if marker == "Module" else None if marker == "Empty" else \
+                        self.extension_value(field, child)
+                    field.set(connection, value)
+            except ValueProblem as problem:
+                self.report(problem, child)
+        return connection
+
+    def connections(self, descriptions: etree._Element) -> None:
+        found: dict[str, Connection] = {}
+        order: list[str] = []
+        for child in descriptions:
+            if child.tag == EDSCONV + "EntryOrder":
+                order = (child.text or "").split()
+                continue
+            if child.tag not in (*FAMILIES, EDSCONV + "Connection"):
+                continue
+            keyword = child.get("id", "")
+            match = _ANY_KEYWORD.fullmatch(keyword)
+            family = match[1] if match else ""
+            if family not in FAMILIES or (child.tag in FAMILIES and child.tag != family):
+                self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a {etree.QName(child).localname}N "
+                                         "keyword"), child)
+                continue
+            if keyword not in found:
+                found[keyword] = self.connection(child, family, keyword, int(match[2]))
+        for keyword in [k for k in order if k in found] + [k for k in found if k not in order]:
+            self.device.connections[keyword] = found[keyword]
+
+    # ports
+    def specific(self, elements: Iterable[etree._Element]) -> list[Any]:
+        values: list[Any] = []
+        for element in elements:
+            if element.tag == EDSCONV + "Empty":
+                values.append(None)
+            elif element.tag == EDSCONV + "Group":
+                values.append(self.specific(element))
+            elif element.tag == EDSCONV + "Field":
+                values.append(self.extension_value(None, element))
+        return values
+
+    def port(self, element: etree._Element) -> Port | None:
+        keyword = element.get("id", "")
+        match = _ANY_KEYWORD.fullmatch(keyword)
+        if not match or match[1] != "Port":
+            self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a PortN keyword"), element)
+            return None
+        port = Port(int(match[2]))
+        for child in element:
+            tag = child.tag
+            try:
+                if tag == "PortTypeName":
+                    port.type_name = (child.text or "").strip()
+                elif tag == "PortName":
+                    port.name = child.text or ""
+                elif tag == "PortObject":
+                    port.object_path = self.path(child.text or "")
+                elif tag == "PortNumber":
+                    text = (child.text or "").strip()
+                    if not (text.isascii() and text.isdigit()) or int(text) > _UINT_MAX:
+                        raise ValueProblem(OUT_OF_RANGE, f"{text!r} is not a UINT port number")
+                    port.port_number = int(text)
+                elif tag == "PortSpecific":
+                    port.specific = tuple(self.specific(child))
+                elif tag == EDSCONV + "Value" and child.get("field") in ("PortTypeName", "PortName"):
+                    attribute = "type_name" if child.get("field") == "PortTypeName" else "name"
+                    setattr(port, attribute, self.extension_value(None, child))
+            except ValueProblem as problem:
+                self.report(problem, child)
+        return port
+
+    def ports(self, transport: etree._Element) -> None:
+        ports: list[Port] = []
+        placed: list[tuple[int, Port]] = []
+        for element in transport.iterchildren("Ports", EDSCONV + "Port"):
+            if element.tag == "Ports":
+                ports.extend(p for p in map(self.port, element.iterchildren("Port")) if p is not None)
+                continue
+            port = self.port(element)
+            position = element.get("position", "")
+            if port is None:
+                continue
+            if position.isascii() and position.isdigit():
+                placed.append((int(position), port))
+            else:
+                ports.append(port)
+        for position, port in sorted(placed, key=lambda item: item[0]):
+            ports.insert(position, port)
+        self.device.ports.extend(ports)
+
+
+def _describe(element: etree._Element) -> str:
+    qname = etree.QName(element)
+    name = f"edsconv:{qname.localname}" if qname.namespace else qname.localname
+    owner = next((a.get("id") for a in element.iterancestors() if a.get("id")), None)
+    return f"{owner} {name}" if owner else name
+
+
+def read_commnet_profile(root: etree._Element, device: Device) -> list[Diagnostic]:
+    """Fill ``device.connections`` and ``device.ports`` from a network profile (the inverse of
+    :func:`commnet_profile`, extension elements included); the diagnostics name values
+    that could not be read. The required-minimum objects carry nothing the model keeps."""
+    reader = _Reader(device)
+    body = root.find("ProfileBody")
+    if body is None:
+        return reader.diagnostics
+    descriptions = body.find("ApplicationLayers/ConnectionManager/ConnectionDescriptions")
+    if descriptions is not None:
+        reader.connections(descriptions)
+    transport = body.find("TransportLayers")
+    if transport is not None:
+        reader.ports(transport)
+    for connection in device.connections.values():
+        for endpoint in (connection.o_to_t, connection.t_to_o, connection.config1, connection.config2):
+            for value in (endpoint.rpi, endpoint.size, endpoint.format):
+                if isinstance(value, Reference):
+                    value.target = device.resolve(value.keyword)
+    return reader.diagnostics

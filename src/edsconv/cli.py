@@ -33,6 +33,8 @@ class LazyGroup(click.Group):
         "lint": "edsconv.lint:lint_command",
         "rules": "edsconv.lint:rules_command",
         "merge": "edsconv.merge:merge_command",
+        "fmt": "edsconv.eds_canonical:fmt_command",
+        "diff": "edsconv.diff:diff_command",
         "show": "edsconv.show:show_command",
         "eds2xml": "edsconv.convert:eds2xml_command",
         "xml2eds": "edsconv.convert:xml2eds_command",

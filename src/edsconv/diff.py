@@ -1,0 +1,375 @@
+"""Semantic comparison of two devices: what changed between two EDS revisions.
+
+:func:`diff` compares two :class:`~edsconv.model.Device` objects entry by entry
+and field by field. What counts is the meaning, not the spelling: ``0x10`` and
+``16`` are the same descriptor, entries may stand in any order, comments are
+ignored. NaN equals NaN; references compare by keyword (not by what they
+resolve to); entries and sections the 2003 text does not define compare by
+keyword and by their values as written.
+
+Each :class:`Change` says what changed (``Param3 default``, ``Assem100 member 2``,
+``Connection1 O=>T RPI``, ``identity.product_code``) with the old and new value
+spelled as in an EDS (:func:`edsconv.eds_canonical.render_value`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import click
+
+from edsconv.model import (
+    Assembly,
+    AssemblyMember,
+    Connection,
+    Device,
+    GenericEntry,
+    GenericSection,
+    Parameter,
+    Reference,
+)
+from edsconv.syntax import Group, Scalar, String
+from edsconv.values import PathItem, StringIMember
+
+#: Categories of changes, in the order the text output lists them.
+CATEGORIES = ("identity", "params", "assemblies", "connections", "others")
+
+
+@dataclass(frozen=True, slots=True)
+class Change:
+    #: "added", "removed" or "changed"
+    kind: str
+    #: what changed: "Param3", "Param3 default", "Assem100 member 2", "identity.product_code" ...
+    what: str
+    #: the old and new value as written in an EDS (None when absent)
+    old: str | None = None
+    new: str | None = None
+    #: one of :data:`CATEGORIES`
+    category: str = "others"
+
+    def as_dict(self) -> dict:
+        return {"kind": self.kind, "category": self.category, "what": self.what, "old": self.old, "new": self.new}
+
+    def format(self) -> str:
+        if self.kind == "added":
+            return f"+ {self.what}" + (f": {_or_empty(self.new)}" if self.new is not None else "")
+        if self.kind == "removed":
+            return f"- {self.what}" + (f": {_or_empty(self.old)}" if self.old is not None else "")
+        return f"~ {self.what}: {_or_empty(self.old)} -> {_or_empty(self.new)}"
+
+
+#: longer values are cut in the text output (the JSON output keeps them whole)
+TEXT_WIDTH = 60
+
+
+def _or_empty(text: str | None) -> str:
+    if text is None:
+        return "(empty)"
+    return text if len(text) <= TEXT_WIDTH else text[:TEXT_WIDTH - 3] + "..."
+
+
+# --- comparable forms --------------------------------------------------------------------
+
+
+def comparable(value: Any) -> Any:
+    """A value in a form where ``==`` is the semantic equality: NaN equals NaN,
+    references are their keyword (and bit), records their compared fields,
+    syntax values (of generic entries) their spelling."""
+    if isinstance(value, float) and math.isnan(value):
+        return ("NaN",)
+    if isinstance(value, Reference):
+        return ("ref", value.keyword, value.bit)
+    if isinstance(value, Scalar):
+        return ("scalar", value.raw)
+    if isinstance(value, String):
+        return ("string", value.unicode, value.text)
+    if isinstance(value, Group):
+        return ("group", tuple(comparable(f.value) for f in value.fields))
+    if isinstance(value, dict):
+        return ("dict", tuple((comparable(k), comparable(v)) for k, v in value.items()))
+    if isinstance(value, (list, tuple)):
+        return tuple(comparable(v) for v in value)
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        return (type(value).__name__, tuple(comparable(getattr(value, f.name))
+                                            for f in dataclasses.fields(value) if f.compare))
+    return value
+
+
+def same(a: Any, b: Any) -> bool:
+    return comparable(a) == comparable(b)
+
+
+def display(value: Any, type_name: str = "") -> str | None:
+    """A value as it would be written in an EDS: ``0x0010``, ``"Speed"``, ``Param3``."""
+    from edsconv.eds_canonical import render_value
+
+    if value is None:
+        return None
+    if isinstance(value, (Scalar, String, Group)):
+        syntax = value
+    elif isinstance(value, (list, tuple)) and any(not isinstance(v, (PathItem, StringIMember)) for v in value):
+        return ", ".join(_or_empty(display(v, type_name)) for v in value)
+    else:
+        try:
+            syntax = render_value(value, type_name)
+        except TypeError:
+            return str(value)
+    return _syntax_text(syntax)
+
+
+def _syntax_text(syntax) -> str:
+    if syntax is None:
+        return ""
+    if isinstance(syntax, Group):
+        return "{" + ", ".join(_syntax_text(f.value) for f in syntax.fields) + "}"
+    return syntax.raw
+
+
+# --- comparison --------------------------------------------------------------------------
+
+
+class _Differ:
+    def __init__(self) -> None:
+        self.changes: list[Change] = []
+
+    def value(self, what: str, old: Any, new: Any, category: str, type_name: str = "") -> None:
+        if same(old, new):
+            return
+        if old is None:
+            self.changes.append(Change("added", what, None, display(new, type_name), category))
+        elif new is None:
+            self.changes.append(Change("removed", what, display(old, type_name), None, category))
+        else:
+            self.changes.append(Change("changed", what, display(old, type_name), display(new, type_name), category))
+
+    def attributes(self, prefix: str, old, new, attributes: dict[str, str], category: str, sep: str = ".") -> None:
+        for attribute, type_name in attributes.items():
+            self.value(f"{prefix}{sep}{attribute}", getattr(old, attribute) if old is not None else None,
+                       getattr(new, attribute) if new is not None else None, category, type_name)
+
+    def keyed(self, old: dict, new: dict, category: str, compare, label=lambda record: None) -> None:
+        """Records by key: added, removed, and the changes of those in both."""
+        for key, record in old.items():
+            if key not in new:
+                self.changes.append(Change("removed", key, label(record), None, category))
+            elif not same(record, new[key]):
+                compare(key, record, new[key])
+        for key, record in new.items():
+            if key not in old:
+                self.changes.append(Change("added", key, None, label(record), category))
+
+
+_FILE = {"description": "", "create_date": "", "create_time": "", "mod_date": "", "mod_time": "", "revision": "",
+         "home_url": ""}
+_IDENTITY = {"vendor_code": "UINT", "vendor_name": "", "product_type": "UINT", "product_type_string": "",
+             "product_code": "UINT", "major_revision": "USINT", "minor_revision": "USINT", "product_name": "",
+             "catalog": "", "icon": "", "exclude_from_adapter_rack_connection": ""}
+_PARAM_CLASS = {"max_instances": "UINT", "descriptor": "WORD", "cfg_assembly": "UINT"}
+_PARAMETER = {"link_path_size": "USINT", "link_path": "EPATH", "descriptor": "WORD", "data_type_code": "code",
+              "data_size": "USINT", "name": "", "units": "", "help": "", "minimum": "", "maximum": "",
+              "default": "", "international_name": "", "international_units": "", "international_help": ""}
+_SCALING = {"multiplier": "UINT", "divisor": "UINT", "base": "UINT", "offset": "INT", "multiplier_link": "UINT",
+            "divisor_link": "UINT", "base_link": "UINT", "offset_link": "UINT", "decimal_precision": "USINT"}
+_ASSEMBLY = {"name": "", "path": "EPATH", "size": "UINT", "descriptor": "WORD", "module_member_list": ""}
+_CONNECTION = {"trigger_transport": "DWORD", "parameters": "DWORD"}
+_ENDPOINTS = (("o_to_t", "O=>T"), ("t_to_o", "T=>O"), ("config1", "config #1"), ("config2", "config #2"))
+_PORT = {"type_name": "Keyword", "name": "", "object_path": "EPATH", "port_number": "UINT", "specific": ""}
+_MODULAR = {"define_slots_in_rack": "UINT", "slot_display_rule": "", "width": "UINT", "external_id": "EPATH",
+            "generic_id": "EPATH", "extern_id_exact_match": "Keyword"}
+_RACK = {"vendor_code": "UINT", "product_type": "UINT", "product_code": "UINT", "major_revision": "USINT",
+         "minor_revision": "USINT", "legal_slots": ""}
+_QUERY = {"path": "EPATH", "service": "USINT", "id_size": "USINT", "empty_slot_id": "EPATH"}
+
+
+def _value_type(parameter: Parameter) -> str:
+    data_type = parameter.data_type
+    return data_type.name if data_type is not None and data_type.size is not None else ""
+
+
+def _member_text(member: AssemblyMember) -> str:
+    return f"{display(member.size) or ''}, {display(member.reference) or ''}".strip()
+
+
+def diff(a: Device, b: Device) -> list[Change]:
+    """The semantic changes from ``a`` to ``b``; empty when they describe the same device."""
+    d = _Differ()
+    d.attributes("file", a.file, b.file, _FILE, "identity")
+    d.attributes("identity", a.identity, b.identity, _IDENTITY, "identity")
+    d.keyed({f"Class{c.number}": c for c in a.classifications}, {f"Class{c.number}": c for c in b.classifications},
+            "identity", lambda key, old, new: d.value(key, (old.classification, *old.subclassifications),
+                                                     (new.classification, *new.subclassifications), "identity"))
+    if not same(a.param_class, b.param_class):
+        d.attributes("ParamClass", a.param_class, b.param_class, _PARAM_CLASS, "params")
+    d.keyed(a.parameters, b.parameters, "params", lambda key, old, new: _parameter(d, key, old, new),
+            lambda p: display(p.name))
+    d.keyed({f"Group{g.number}": g for g in a.groups}, {f"Group{g.number}": g for g in b.groups}, "params",
+            lambda key, old, new: (d.value(f"{key} name", old.name, new.name, "params"),
+                                   d.value(f"{key} members", [m.keyword for m in old.members],
+                                           [m.keyword for m in new.members], "params")),
+            lambda g: display(g.name))
+    d.value("Assembly Revision", a.assembly_revision, b.assembly_revision, "assemblies", "UINT")
+    d.keyed(a.assemblies, b.assemblies, "assemblies", lambda key, old, new: _assembly(d, key, old, new),
+            lambda x: display(x.name))
+    d.keyed(a.connections, b.connections, "connections", lambda key, old, new: _connection(d, key, old, new),
+            lambda c: display(c.name))
+    d.keyed({f"Port{p.number}": p for p in a.ports}, {f"Port{p.number}": p for p in b.ports}, "others",
+            lambda key, old, new: d.attributes(key, old, new, _PORT, "others", " "), lambda p: display(p.name))
+    _modular(d, a, b)
+    _generic(d, a, b)
+    return d.changes
+
+
+def _parameter(d: _Differ, key: str, old: Parameter, new: Parameter) -> None:
+    for attribute, type_name in _PARAMETER.items():
+        if attribute in ("minimum", "maximum", "default"):
+            type_name = _value_type(new) or _value_type(old)
+        d.value(f"{key} {attribute}", getattr(old, attribute), getattr(new, attribute), "params", type_name)
+    d.attributes(f"{key} scaling", old.scaling, new.scaling, _SCALING, "params")
+    d.value(f"{key} size adder", old.size_adder, new.size_adder, "params")
+    if not same(old.enum, new.enum):
+        old_enum, new_enum = old.enum or {}, new.enum or {}
+        if old.enum is None or new.enum is None:
+            d.value(f"{key} enum", _enum_text(old.enum), _enum_text(new.enum), "params")
+            return
+        for value in {**old_enum, **new_enum}:
+            d.value(f"{key} enum {value}", old_enum.get(value), new_enum.get(value), "params")
+
+
+def _enum_text(enum: dict | None) -> str | None:
+    if enum is None:
+        return None
+    return ", ".join(f"{value} {display(text) or ''}".strip() for value, text in enum.items())
+
+
+def _assembly(d: _Differ, key: str, old: Assembly, new: Assembly) -> None:
+    d.attributes(key, old, new, _ASSEMBLY, "assemblies", " ")
+    for index in range(max(len(old.members), len(new.members))):
+        before = old.members[index] if index < len(old.members) else None
+        after = new.members[index] if index < len(new.members) else None
+        what = f"{key} member {index + 1}"
+        if before is None:
+            d.changes.append(Change("added", what, None, _member_text(after), "assemblies"))
+        elif after is None:
+            d.changes.append(Change("removed", what, _member_text(before), None, "assemblies"))
+        elif not same(before, after):
+            d.changes.append(Change("changed", what, _member_text(before), _member_text(after), "assemblies"))
+
+
+def _connection(d: _Differ, key: str, old: Connection, new: Connection) -> None:
+    d.attributes(key, old, new, _CONNECTION, "connections", " ")
+    for attribute, label in _ENDPOINTS:
+        before, after = getattr(old, attribute), getattr(new, attribute)
+        for part, type_name in (("rpi", "UDINT"), ("size", "UINT"), ("format", "")):
+            d.value(f"{key} {label} {part.upper() if part == 'rpi' else part}", getattr(before, part),
+                    getattr(after, part), "connections", type_name)
+    d.attributes(key, old, new, {"name": "", "help": "", "path": "EPATH"}, "connections", " ")
+
+
+def _modular(d: _Differ, a: Device, b: Device) -> None:
+    if same(a.modular, b.modular):
+        return
+    d.attributes("Modular", a.modular, b.modular, _MODULAR, "others")
+    old_racks = {f"Rack{r.number}": r for r in (a.modular.racks if a.modular else [])}
+    new_racks = {f"Rack{r.number}": r for r in (b.modular.racks if b.modular else [])}
+    d.keyed(old_racks, new_racks, "others", lambda key, old, new: d.attributes(key, old, new, _RACK, "others", " "))
+    old_query = a.modular.query if a.modular else None
+    new_query = b.modular.query if b.modular else None
+    if not same(old_query, new_query):
+        d.attributes("Query", old_query, new_query, _QUERY, "others", " ")
+
+
+def _entries_by_keyword(entries: list[GenericEntry]) -> dict[str, list]:
+    """Generic entries by keyword; a repeated keyword gets ``#2``, ``#3`` ..."""
+    out: dict[str, list] = {}
+    for entry in entries:
+        key = entry.keyword
+        count = sum(1 for k in out if k == key or k.startswith(f"{key}#"))
+        out[key if not count else f"{key}#{count + 1}"] = entry.values
+    return out
+
+
+def _generic(d: _Differ, a: Device, b: Device) -> None:
+    for section in dict.fromkeys([*a.extra_entries, *b.extra_entries]):
+        old = _entries_by_keyword(a.extra_entries.get(section, []))
+        new = _entries_by_keyword(b.extra_entries.get(section, []))
+        for keyword in dict.fromkeys([*old, *new]):
+            d.value(f"[{section}] {keyword}", old.get(keyword), new.get(keyword), "others")
+    old_sections, new_sections = _sections_by_name(a.other_sections), _sections_by_name(b.other_sections)
+    for name in dict.fromkeys([*old_sections, *new_sections]):
+        before, after = old_sections.get(name), new_sections.get(name)
+        if before is None or after is None:
+            kind = "added" if before is None else "removed"
+            d.changes.append(Change(kind, f"[{name}]", category="others"))
+            continue
+        old, new = _entries_by_keyword(before.entries), _entries_by_keyword(after.entries)
+        for keyword in dict.fromkeys([*old, *new]):
+            d.value(f"[{name}] {keyword}", old.get(keyword), new.get(keyword), "others")
+
+
+def _sections_by_name(sections: list[GenericSection]) -> dict[str, GenericSection]:
+    out: dict[str, GenericSection] = {}
+    for section in sections:
+        name = section.name
+        count = sum(1 for k in out if k == name or k.startswith(f"{name}#"))
+        out[name if not count else f"{name}#{count + 1}"] = section
+    return out
+
+
+def format_text(changes: list[Change]) -> str:
+    """Changes grouped by category (identity, params, assemblies, connections, others)."""
+    lines = []
+    for category, group in iter_categories(changes):
+        lines.append(f"{category}:")
+        lines.extend(f"  {change.format()}" for change in group)
+    return "\n".join(lines)
+
+
+@click.command("diff")
+@click.argument("old_file", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("new_file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text",
+              help="text: changes grouped by category; json: a list of changes.")
+def diff_command(old_file: Path, new_file: Path, output_format: str) -> int:
+    """Compare two EDS files by meaning (docs/diff.md).
+
+    Exit 0 when they describe the same device, 1 when they differ, 2 when a file
+    cannot be read.
+    """
+    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
+    from edsconv.reader import load
+    from edsconv.semantic import build
+
+    devices = []
+    for path in (old_file, new_file):
+        try:
+            devices.append(build(load(path)))
+        except OSError as error:
+            click.echo(f"{path}: cannot read: {error.strerror or error}", err=True)
+            return EXIT_USAGE
+    changes = diff(*devices)
+    if output_format == "json":
+        click.echo(json.dumps({"old": str(old_file), "new": str(new_file), "equal": not changes,
+                               "changes": [c.as_dict() for c in changes]}, indent=2))
+    elif changes:
+        click.echo(f"{old_file} -> {new_file}: {len(changes)} change(s)")
+        click.echo(format_text(changes))
+    else:
+        click.echo(f"{old_file} and {new_file} describe the same device")
+    return EXIT_FINDINGS if changes else EXIT_CLEAN
+
+
+def iter_categories(changes: list[Change]) -> Iterator[tuple[str, list[Change]]]:
+    """(category, changes) for each category that has changes, in :data:`CATEGORIES` order."""
+    for category in CATEGORIES:
+        group = [c for c in changes if c.category == category]
+        if group:
+            yield category, group
+
+
+__all__ = ["CATEGORIES", "Change", "comparable", "diff", "diff_command", "display", "format_text", "same"]

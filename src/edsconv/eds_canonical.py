@@ -659,7 +659,7 @@ def write_canonical(eds: EdsFile, newline: str | None = None) -> str:
     - a short entry on one line: ``Keyword = f1, f2, f3;`` (empty fields leave just
       their comma);
     - an entry with more than four fixed fields (ParamN, AssemN, ConnectionN,
-      PortN, RackN), a comment inside, or longer than 100 columns on one line:
+      PortN, RackN), a comment inside (other than one after the ``;``), or longer than 100 columns on one line:
       ``Keyword =`` on its own line, then one field per line indented eight
       spaces (a repeating group, e.g. an assembly member's size and reference
       or an enum's value and text, shares a line), the last one ending in ``;``;
@@ -742,8 +742,13 @@ def _write_entry(out: _Out, section: str, entry: Entry) -> None:
     for comment in entry.leading_comments:
         out.own_line(_INDENT, comment.text)
     one_line = _join([_value_text(f.value) for f in entry.fields])
-    if not entry.comments and not _has_comments(entry.fields) and not _is_long(section, entry, one_line):
-        out.own_line(f"{_INDENT}{entry.keyword} = {one_line};")
+    last_field = entry.fields[-1]
+    if (not entry.comments and not _has_comments(entry.fields[:-1]) and len(last_field.comments) <= 1
+            and not (isinstance(last_field.value, Group) and _has_comments(last_field.value.fields))
+            and not _is_long(section, entry, one_line)):
+        # a comment of the last field may follow the ';' on the same line
+        out.own_line(f"{_INDENT}{entry.keyword} = {one_line};",
+                     last_field.comments[0].text if last_field.comments else None)
         return
     out.text(f"{entry.keyword} =")
     for comment in entry.comments:

@@ -92,6 +92,9 @@ def device_profile(device: Device, header: Header, *, commnet_handle: bool = Fal
     network profile of the same header (``<identification>-COMM``).
     """
     root = etree.Element("ISO15745Profile", nsmap=NSMAP)
+    # header texts come from the EDS: characters XML cannot carry become U+FFFD
+    header = dataclasses.replace(header, **{name: _clean(getattr(header, name))
+                                            for name in ("identification", "revision", "name", "source")})
     root.append(header_element(header, "Device", "CIP", "DEV"))
     body = etree.SubElement(root, "ProfileBody")
     _write_file(body, device.file, header)

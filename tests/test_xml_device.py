@@ -223,3 +223,11 @@ def test_unreadable_values_are_reported():
     diagnostics = read_device_profile(root, device)
     assert [d.code for d in diagnostics] == ["XML201", "XML202"]
     assert device.identity.vendor_code is None
+
+
+def test_commnet_handle():
+    device = edsconv.build(edsconv.load(REPO / "corpus" / "examples" / "io_adapter.eds"))
+    root = device_profile(device, Header.derive(device), commnet_handle=True)
+    serialise(root, "cip-device")
+    handle = root.find("ProfileBody/ExternalProfileHandle")
+    assert [e.text for e in handle] == ["65535-12-1001-COMM", "1.1"]

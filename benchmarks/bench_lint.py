@@ -10,13 +10,11 @@ included, on one core (``-j1``) and on all cores. Each figure is the best of N.
 
 from __future__ import annotations
 
-import argparse
 import json
 import logging
 import os
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 logging.basicConfig(level=logging.CRITICAL)  # before eds_pie, which logs every token at DEBUG
@@ -24,17 +22,7 @@ from eds_pie.eds_pie import CIP_EDS  # noqa: E402
 
 import edsconv  # noqa: E402
 from edsconv.source import decode  # noqa: E402
-
-CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"
-
-
-def best_of(repeat: int, function, *arguments) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        function(*arguments)
-        times.append(time.perf_counter() - start)
-    return min(times)
+from common import best_of, corpus_files, options  # noqa: E402
 
 
 def edsconv_lint(data: bytes) -> None:
@@ -56,11 +44,11 @@ def in_process(files: list[Path], repeat: int) -> dict:
     for path in files:
         data = path.read_bytes()
         text = decode(data).text
-        seconds = best_of(repeat, edsconv_lint, data)
+        seconds = best_of(repeat, edsconv_lint, data)[0]
         row["bytes"] += len(data)
         row["edsconv_s"] += seconds
         if eds_pie_check(text):
-            row["eds_pie_s"] += best_of(repeat, CIP_EDS, text)
+            row["eds_pie_s"] += best_of(repeat, CIP_EDS, text)[0]
             row["eds_pie_files"] += 1
             row["eds_pie_bytes"] += len(data)
             row["edsconv_on_eds_pie_files_s"] += seconds
@@ -73,18 +61,14 @@ def whole_command(corpus: Path, repeat: int, jobs: str | None) -> float:
     def run() -> None:
         subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
 
-    return best_of(repeat, run)
+    return best_of(repeat, run)[0]
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeat", type=int, default=3)
-    parser.add_argument("--corpus", type=Path, default=CORPUS)
-    parser.add_argument("--json", type=Path)
-    arguments = parser.parse_args()
-    if not arguments.corpus.is_dir():
+    arguments = options(__doc__, 3)
+    files = corpus_files(arguments.corpus)
+    if not files:
         sys.exit(f"no corpus at {arguments.corpus}")
-    files = sorted(p for p in arguments.corpus.iterdir() if p.suffix.lower() == ".eds")
     row = in_process(files, arguments.repeat)
     megabytes = row["bytes"] / 1e6
     print(f"{row['files']} files, {megabytes:.2f} MB, best of {arguments.repeat}")

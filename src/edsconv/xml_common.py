@@ -79,7 +79,8 @@ def header_element(header: Header, class_id: str, technology: str, suffix: str,
                       ("ProfileRevision", header.revision), ("ProfileName", header.name),
                       ("ProfileSource", header.source), ("ProfileClassID", class_id),
                       ("ProfileDate", header.date.isoformat())):
-        etree.SubElement(element, tag).text = text
+        # header texts come from the EDS: characters XML cannot carry become U+FFFD
+        etree.SubElement(element, tag).text = xml_text(text)
     reference = etree.SubElement(element, "ISO15745Reference")
     etree.SubElement(reference, "ISO15745Part").text = "4"
     etree.SubElement(reference, "ISO15745Edition").text = "1"

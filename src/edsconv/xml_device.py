@@ -53,7 +53,7 @@ from edsconv.model import (
 from edsconv.semantic import iter_references, reference
 from edsconv.syntax import Scalar, String
 from edsconv.values import PathItem, Revision, StringIMember
-from edsconv.xml_common import EDSCONV, NSMAP, Header, header_element
+from edsconv.xml_common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
 
 BAD_DEVICE_VALUE = rule("XML201", Severity.WARNING, "C.2.1.2",
                         "A device profile element holds a value edsconv cannot read; the model field stays empty")
@@ -80,8 +80,6 @@ _PATH_REFERENCE = re.compile(rf"\[?(?:Proxy)?Param{_ID_NUMBER}\]?")
 _HEX_BYTE = re.compile("[0-9A-Fa-f]{2}")
 _REVISION = re.compile(r"[0-9]\.[1-9]|[1-9]\.[0-9]")
 # characters XML 1.0 cannot carry (and lone surrogates, which UTF-8 cannot)
-_NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
-
 
 # --- the writer ---------------------------------------------------------------------------
 
@@ -92,9 +90,6 @@ def device_profile(device: Device, header: Header, *, commnet_handle: bool = Fal
     network profile of the same header (``<identification>-COMM``).
     """
     root = etree.Element("ISO15745Profile", nsmap=NSMAP)
-    # header texts come from the EDS: characters XML cannot carry become U+FFFD
-    header = dataclasses.replace(header, **{name: _clean(getattr(header, name))
-                                            for name in ("identification", "revision", "name", "source")})
     root.append(header_element(header, "Device", "CIP", "DEV"))
     body = etree.SubElement(root, "ProfileBody")
     _write_file(body, device.file, header)
@@ -127,7 +122,7 @@ def device_profile(device: Device, header: Header, *, commnet_handle: bool = Fal
 def _clean(text: str | None) -> str | None:
     """Text for a schema element: characters XML cannot carry become U+FFFD
     (the exact text then goes into an edsconv:Value)."""
-    return None if text is None else _NOT_XML.sub("\ufffd", text)
+    return None if text is None else xml_text(text)
 
 
 def _number(value, type_name: str) -> str | None:
@@ -210,7 +205,7 @@ def _write_file(body, file: FileDescription, header: Header) -> None:
 
 def _is_uri(text: str) -> bool:
     # xsd:anyURI as xmlschema checks it: no spaces or characters outside URI references
-    return not re.search(r"[\s<>\"{}|\\^`]", text) and not _NOT_XML.search(text)
+    return not re.search(r"[\s<>\"{}|\\^`]", text) and is_xml_text(text)
 
 
 def _write_identity(body, device: Device) -> None:
@@ -408,7 +403,7 @@ def _member_text(value) -> str | None:
 
 def _set_text(element, text: str) -> None:
     """Text of an edsconv element; text XML cannot carry is stored as a JSON string."""
-    if _NOT_XML.search(text):
+    if not is_xml_text(text):
         element.set("escaped", "json")
         element.text = json.dumps(text, ensure_ascii=True)
     else:
@@ -436,7 +431,7 @@ def _comment_line(note: CommentNote) -> str:
             "text": note.text}
     item = {key: value for key, value in item.items() if value is not None}
     line = json.dumps(item, ensure_ascii=False)
-    return json.dumps(item) if _NOT_XML.search(line) else line
+    return line if is_xml_text(line) else json.dumps(item)
 
 
 def _write_entries(parent, entries: list[GenericEntry]) -> None:

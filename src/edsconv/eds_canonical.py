@@ -717,16 +717,11 @@ def _render(lines: list[_Line]) -> list[str]:
 
 
 def _write_entries(out: _Out, section: Section) -> None:
-    unparsed = iter(section.unparsed)
-    pending = next(unparsed, None)
-    for index, entry in enumerate(section.entries):
-        while pending is not None and pending[0] <= index:
-            _write_unparsed(out, pending[1])
-            pending = next(unparsed, None)
-        _write_entry(out, section.name, entry)
-    while pending is not None:
-        _write_unparsed(out, pending[1])
-        pending = next(unparsed, None)
+    for item in section.items():
+        if isinstance(item, Unparsed):
+            _write_unparsed(out, item)
+        else:
+            _write_entry(out, section.name, item)
 
 
 def _write_unparsed(out: _Out, unparsed: Unparsed) -> None:

@@ -64,16 +64,11 @@ def write(eds: EdsFile, newline: str | None = None) -> str:
 
 
 def _write_entries(out: _Lines, section: Section) -> None:
-    unparsed = iter(section.unparsed)
-    pending = next(unparsed, None)
-    for index, entry in enumerate(section.entries):
-        while pending is not None and pending[0] <= index:
-            _write_unparsed(out, pending[1])
-            pending = next(unparsed, None)
-        _write_entry(out, entry)
-    while pending is not None:
-        _write_unparsed(out, pending[1])
-        pending = next(unparsed, None)
+    for item in section.items():
+        if isinstance(item, Unparsed):
+            _write_unparsed(out, item)
+        else:
+            _write_entry(out, item)
 
 
 def _write_unparsed(out: _Lines, unparsed: Unparsed) -> None:

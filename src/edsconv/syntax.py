@@ -227,6 +227,19 @@ class Section(Located):
     offset: int = field(default=0, compare=False)
     source: LineIndex | None = field(default=None, compare=False, repr=False)
 
+    def items(self) -> Iterator[Entry | Unparsed]:
+        """Entries and unparsable text, in file order."""
+        unparsed = iter(self.unparsed)
+        pending = next(unparsed, None)
+        for index, entry in enumerate(self.entries):
+            while pending is not None and pending[0] <= index:
+                yield pending[1]
+                pending = next(unparsed, None)
+            yield entry
+        while pending is not None:
+            yield pending[1]
+            pending = next(unparsed, None)
+
     def entry(self, keyword: str) -> Entry | None:
         """The first entry with this keyword (duplicates are reported, and kept)."""
         for entry in self.entries:

@@ -178,7 +178,8 @@ def test_module_newer_references_and_duplicate_names(edge):
     assert proxy.findtext("O-T_Size") is None  # Module: no element, a marker
     assert proxy.findtext("T-O_Size") == "Param1:3"
     assert proxy.find("T-O_Format") is None
-    assert proxy.findtext("Path") == "01 SLOT_MINUS_ONE 20 04 24 [Param1] 2C [ProxyParam1]"
+    # [Param1] is local to the path, ProxyParam1 shared across the EDS (C.4.1.4.9.13): both kept
+    assert proxy.findtext("Path") == "01 SLOT_MINUS_ONE 20 04 24 [Param1] 2C ProxyParam1"
     # Connection1 was written first and keeps "Same"; the key ConnectionName wants unique names
     assert proxy.findtext("Name_String") == "Same [ProxyConnect1]"
     assert extensions(proxy) == [("Module", {"field": "O-T_Size"}, None),

@@ -127,7 +127,7 @@ def _item_text(item: PathItem, device: Device | None) -> str:
         return f"0x{item.byte:02X}"
     if item.keyword:
         return item.keyword
-    text = f"[{item.reference}]"
+    text = str(item)
     target = device.parameters.get(item.reference) if device else None
     if target is not None:
         details = ", ".join(str(part) for part in (

@@ -299,24 +299,33 @@ _PATH_TOKEN = re.compile(r"\s*(?:(?P<byte>[0-9A-Fa-f]{2})(?![0-9A-Fa-f])|\[(?P<b
 
 @dataclass(frozen=True, slots=True)
 class PathItem:
-    """One element of an EDS path: a byte, a ``[ParamN]`` substitution or a keyword."""
+    """One element of an EDS path: a byte, a parameter substitution or a keyword."""
 
     byte: int | None = None
-    #: ``Param2`` for ``[Param2]`` or a bare ``ProxyParam2``: the value of that parameter goes here
+    #: ``Param2`` / ``ProxyParam2``: the value of that parameter goes here
     reference: str | None = None
     #: SLOT, SLOT_MINUS_ONE, SYMBOL_ANSI
     keyword: str | None = None
+    #: True for ``[Param2]``: the value is local to this path; a bare ``Param2``
+    #: has the same value everywhere in the EDS (C.4.1.4.9.13)
+    local: bool = False
 
     def __str__(self) -> str:
         if self.byte is not None:
             return f"{self.byte:02X}"
-        return f"[{self.reference}]" if self.reference else str(self.keyword)
+        if self.reference:
+            return f"[{self.reference}]" if self.local else self.reference
+        return str(self.keyword)
 
 
 def to_path(value: Value, allow_references: bool = False) -> tuple[PathItem, ...]:
     """EPATH: hex byte pairs separated by spaces (C.4.1.3.6); connection paths may
     also hold ``[ParamN]`` / ``ProxyParamN`` and SLOT keywords (C.4.1.4.9.13)."""
-    text = to_text(value)
+    return path_items(to_text(value), allow_references)
+
+
+def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]:
+    """The items of a path's text, as an EDS string or an XML profile holds it."""
     items: list[PathItem] = []
     position = 0
     stripped_end = len(text.rstrip())
@@ -332,12 +341,12 @@ def to_path(value: Value, allow_references: bool = False) -> tuple[PathItem, ...
         if not allow_references:
             raise ValueProblem(BAD_EPATH, f"path {text!r}: only hexadecimal bytes are allowed here")
         name = match["bracketed"] or match["word"]
-        if name in tables.PATH_KEYWORDS:
+        if name in tables.PATH_KEYWORDS and not match["bracketed"]:
             items.append(PathItem(keyword=name))
         elif re.fullmatch(r"(?:Proxy)?Param[1-9][0-9]*", name):
-            items.append(PathItem(reference=name))
+            items.append(PathItem(reference=name, local=bool(match["bracketed"])))
         else:
-            raise ValueProblem(BAD_EPATH, f"path {text!r}: {name!r} is neither a byte, [ParamN] nor "
+            raise ValueProblem(BAD_EPATH, f"path {text!r}: {name!r} is neither a byte, [ParamN], ParamN nor "
                                "SLOT / SLOT_MINUS_ONE / SYMBOL_ANSI")
     return tuple(items)
 

@@ -36,7 +36,7 @@ from lxml import etree
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.model import MODULE, Connection, Device, Port, Reference
-from edsconv.values import BAD_EPATH, OUT_OF_RANGE, WRONG_KIND, PathItem, ValueProblem
+from edsconv.values import OUT_OF_RANGE, WRONG_KIND, PathItem, ValueProblem, path_items
 from edsconv.xml_common import (
     EDSCONV,
     NSMAP,
@@ -59,7 +59,6 @@ _ENTRY_ID = {family: re.compile(f"{family}{_N}") for family in (*FAMILIES, "Port
 # What a reader accepts: every reference the model knows (AssemExaN from newer files too).
 _ANY_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
 _ANY_KEYWORD = re.compile(r"(Connection|ProxyConnect|ProxiedConnect|Port)([1-9][0-9]*)")
-_PATH_ITEM = re.compile(r"(?P<byte>[0-9A-Fa-f]{2})|\[(?P<bracketed>[A-Za-z]+[0-9]+)\]|(?P<word>[A-Za-z_][A-Za-z0-9_]*)")
 _ESCAPE = re.compile(r"\\(\\|u[0-9A-Fa-f]{4})")
 
 _UDINT_MAX, _UINT_MAX = 0xFFFFFFFF, 0xFFFF
@@ -417,20 +416,7 @@ class _Reader:
 
     @staticmethod
     def path(text: str) -> tuple[PathItem, ...]:
-        items = []
-        for token in text.split():
-            match = _PATH_ITEM.fullmatch(token)
-            name = match and (match["bracketed"] or match["word"])
-            if match and match["byte"]:
-                items.append(PathItem(byte=int(match["byte"], 16)))
-            elif name in tables.PATH_KEYWORDS:
-                items.append(PathItem(keyword=name))
-            elif name and re.fullmatch(r"(?:Proxy)?Param[1-9][0-9]*", name):
-                items.append(PathItem(reference=name))
-            else:
-                raise ValueProblem(BAD_EPATH, f"{token!r} is neither a byte, [ParamN] nor "
-                                   "SLOT / SLOT_MINUS_ONE / SYMBOL_ANSI")
-        return tuple(items)
+        return path_items(text)
 
     def field_value(self, field: _Field, element: etree._Element) -> Any:
         text = "".join(element.itertext())

@@ -52,7 +52,7 @@ from edsconv.model import (
 )
 from edsconv.semantic import iter_references, reference
 from edsconv.syntax import Scalar, String
-from edsconv.values import PathItem, Revision, StringIMember
+from edsconv.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml_common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
 
 BAD_DEVICE_VALUE = rule("XML201", Severity.WARNING, "C.2.1.2",
@@ -77,7 +77,6 @@ _PARAM_REFERENCE = re.compile(rf"(?:Proxy)?Param{_ID_NUMBER}(?::[0-9]{{1,2}})*")
 _ASSEM_REFERENCE = re.compile(rf"(?:Proxy)?Assem{_ID_NUMBER}")
 _ANY_REFERENCE = re.compile(r"(?:ProxyParam|ProxyAssem|Param|AssemExa|Assem)[1-9][0-9]*(?::[0-9]+)?")
 _PATH_REFERENCE = re.compile(rf"\[?(?:Proxy)?Param{_ID_NUMBER}\]?")
-_HEX_BYTE = re.compile("[0-9A-Fa-f]{2}")
 _REVISION = re.compile(r"[0-9]\.[1-9]|[1-9]\.[0-9]")
 # characters XML 1.0 cannot carry (and lone surrogates, which UTF-8 cannot)
 
@@ -569,7 +568,7 @@ def _decode(element):
         case "ref":
             return _reference(text)
         case "path":
-            return _parse_path(text)
+            return path_items(text)
         case "list":
             return [_decode(child) for child in values]
         case "tuple":
@@ -749,26 +748,12 @@ def _class_word(text: str) -> int:
     return int(text, 16) if text[:2].lower() == "0x" else _integer(text)
 
 
-def _parse_path(text: str) -> tuple[PathItem, ...]:
-    items = []
-    for token in text.split():
-        if _HEX_BYTE.fullmatch(token):
-            items.append(PathItem(byte=int(token, 16)))
-        elif token in tables.PATH_KEYWORDS:
-            items.append(PathItem(keyword=token))
-        elif _PATH_REFERENCE.fullmatch(token):
-            items.append(PathItem(reference=token.strip("[]")))
-        else:
-            raise ValueError(token)
-    return tuple(items)
-
-
 def _data_type_code(text: str) -> int | tuple[PathItem, ...]:
     """A USINT code; a one-byte EPATH (``C7``) is the code in hexadecimal; longer paths stay paths."""
     text = text.strip()
     if re.fullmatch("[0-9]+", text) and int(text) <= 255:
         return int(text)
-    path = _parse_path(text)
+    path = path_items(text)
     return path[0].byte if len(path) == 1 and path[0].byte is not None else path
 
 
@@ -783,7 +768,7 @@ def _member_reference(text: str):
     if _ANY_REFERENCE.fullmatch(text):
         return reference(text)
     try:
-        return _parse_path(text)
+        return path_items(text)
     except ValueError:
         return text
 
@@ -877,13 +862,13 @@ def _read_modular(reader: _Reader, element) -> Modular:
                 modular.racks.append(Rack(number, *(child(rack, tag, _integer) for tag in
                                                     ("VendCode", "ProdType", "ProdCode", "MajRev", "MinRev")),
                                           tuple(reader.convert(s, _integer) for s in rack.findall("LegalSlot"))))
-        modular.external_id = child(module, "ExternalID", _parse_path)
-        modular.generic_id = child(module, "GenericID", _parse_path)
+        modular.external_id = child(module, "ExternalID", path_items)
+        modular.generic_id = child(module, "GenericID", path_items)
         modular.extern_id_exact_match = child(module, "ExternIDExactMatch")
         query = module.find("Query")
         if query is not None:
-            modular.query = Query(child(query, "Path", _parse_path), child(query, "Service", _integer),
-                                  child(query, "Size", _integer), child(query, "ExternalID", _parse_path))
+            modular.query = Query(child(query, "Path", path_items), child(query, "Service", _integer),
+                                  child(query, "Size", _integer), child(query, "ExternalID", path_items))
     return modular
 
 
@@ -893,7 +878,7 @@ def _read_parameter(reader: _Reader, element) -> Parameter:
     child = reader.child
     item = Parameter(f"{family}{number}", family, number)
     item.link_path_size = child(element, "LinkPathSize", _integer)
-    item.link_path = child(element, "LinkPath", _parse_path)
+    item.link_path = child(element, "LinkPath", path_items)
     item.descriptor = child(element, "ParamDescriptor", _hex_binary)
     item.data_type_code = child(element, "DataType", _data_type_code)
     if isinstance(item.data_type_code, int):
@@ -937,7 +922,7 @@ def _read_assembly(reader: _Reader, element) -> Assembly:
     number = _id_number(element, family) or 0
     child = reader.child
     item = Assembly(f"{family}{number}", family, number, child(element, "AssemblyName"),
-                    child(element, "AssemblyPath", _parse_path), child(element, "AssemblyDataSize", _integer),
+                    child(element, "AssemblyPath", path_items), child(element, "AssemblyDataSize", _integer),
                     child(element, "AssemblyDescriptor", _hex_binary))
     for member in element.findall("AssemblyMember"):
         size = child(member, "MemberSize", _integer)

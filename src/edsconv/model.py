@@ -146,9 +146,14 @@ class Parameter:
         return tables.flags_set(self.descriptor or 0, tables.PARAM_DESCRIPTOR_BITS)
 
     def engineering_value(self, value: float) -> float:
-        """The value shown to the user, by the scaling formula of Figure C.5."""
+        """The value shown to the user, by the scaling formula of Figure C.5.
+
+        The decimal precision counts only when the descriptor sets bit 6,
+        extended precision scaling (Figure C.5, note a).
+        """
         s = self.scaling
-        precision = s.decimal_precision or 0
+        extended = bool((self.descriptor or 0) & 0x40)
+        precision = (s.decimal_precision or 0) if extended else 0
         return tables.scale(value, s.multiplier if s.multiplier is not None else 1,
                             s.divisor if s.divisor is not None else 1, s.base if s.base is not None else 1,
                             s.offset or 0, precision)

@@ -45,8 +45,6 @@ C.15 has one) and the combined ``Param1`` share a number.
 
 from __future__ import annotations
 
-import os
-import tempfile
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -55,6 +53,7 @@ import click
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Rule, Severity, has_errors, rule
+from edsconv.model import MODULE, MODULE_MEMBER_LIST
 from edsconv.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, Value, ValueKind
 
 _M = "C.4.1.5.3"
@@ -76,8 +75,6 @@ BAD_MODULE_MEMBER_LIST = rule("EDS406", Severity.ERROR, "C.4.1.5.3.2",
 MODULE_CONNECTION_NAME = rule("EDS407", Severity.ERROR, "C.4.1.5.3.3",
                               "The connection name string of a ProxyConnect is Module")
 
-MODULE = tables.MODULE_KEYWORD
-MODULE_MEMBER_LIST = tables.MODULE_MEMBER_LIST_KEYWORD
 
 #: (section, Proxy prefix, Proxied prefix, output prefix)
 FAMILIES = (
@@ -447,22 +444,6 @@ def merge(adapter: EdsFile, modules: list[EdsFile]) -> MergeResult:
 # --- command line ----------------------------------------------------------------------
 
 
-def write_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` through a temporary file in the same folder and a rename."""
-    directory = path.parent if str(path.parent) else Path(".")
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(handle, "w", encoding="utf-8", newline="") as stream:
-            stream.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        try:
-            os.unlink(temporary)
-        except OSError:
-            pass
-        raise
-
-
 @click.command("merge")
 @click.argument("adapter", type=click.Path(dir_okay=False, path_type=Path))
 @click.argument("modules", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
@@ -477,6 +458,7 @@ def merge_command(adapter: Path, modules: tuple[Path, ...], output: Path | None)
     """
     from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
     from edsconv.reader import load
+    from edsconv.xml_common import write_atomically
 
     models = []
     for path in (adapter, *modules):
@@ -493,7 +475,7 @@ def merge_command(adapter: Path, modules: tuple[Path, ...], output: Path | None)
         click.echo(text, nl=False)
     else:
         try:
-            write_atomic(output, text)
+            write_atomically(output, text.encode("utf-8"), force=True)
         except OSError as error:
             click.echo(f"{output}: cannot write: {error.strerror or error}", err=True)
             return EXIT_USAGE

@@ -17,13 +17,13 @@ from pathlib import Path
 from lxml import etree
 
 import edsconv
-from edsconv.convert import profile_documents
-from edsconv.eds_canonical import device_to_eds
-from edsconv.eds_writer import write
+from edsconv.xml.convert import profile_documents
+from edsconv.eds.canonical import device_to_eds
+from edsconv.eds.writer import write
 from edsconv.model import Device
-from edsconv.xml_commnet import read_commnet_profile
-from edsconv.xml_common import Header
-from edsconv.xml_device import read_device_profile
+from edsconv.xml.commnet import read_commnet_profile
+from edsconv.xml.common import Header
+from edsconv.xml.device import read_device_profile
 from common import best_of, corpus_files, options
 from generate import generate
 

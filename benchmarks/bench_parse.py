@@ -20,7 +20,7 @@ logging.basicConfig(level=logging.CRITICAL)  # before eds_pie, which would log e
 from eds_pie.eds_pie import Parser  # noqa: E402
 
 import edsconv  # noqa: E402
-from edsconv.source import decode  # noqa: E402
+from edsconv.eds.source import decode  # noqa: E402
 from generate import generate  # noqa: E402
 
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import edsconv
-from edsconv.syntax import EdsFile
+from edsconv.eds.syntax import EdsFile
 
 REPO = Path(__file__).resolve().parents[1]
 #: Real vendor EDS files, beside the repository (read-only, never copied in).

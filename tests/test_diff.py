@@ -10,7 +10,7 @@ from click.testing import CliRunner
 import edsconv
 from edsconv.cli import cli
 from edsconv.diff import Change, diff, format_text
-from edsconv.semantic import build
+from edsconv.model.build import build
 
 BASE = """[File]
 DescText = "Demo"; CreateDate = 01-02-2024; CreateTime = 10:00:00; Revision = 1.0;

@@ -14,12 +14,12 @@ from hypothesis import strategies as st
 import edsconv
 from edsconv import spec_tables as tables
 from edsconv.diff import diff
-from edsconv.eds_canonical import canonical, device_to_eds, quote, real_text, write_canonical
-from edsconv.eds_writer import write
+from edsconv.eds.canonical import canonical, device_to_eds, quote, real_text, write_canonical
+from edsconv.eds.writer import write
 from edsconv.model import Device, Parameter, Scaling
-from edsconv.semantic import build
-from edsconv.syntax import Scalar
-from edsconv.values import PathItem, StringIMember, to_real
+from edsconv.model.build import build
+from edsconv.eds.syntax import Scalar
+from edsconv.model.values import PathItem, StringIMember, to_real
 from tests.conftest import REPO, SHARED_REAL
 
 CORPUS = sorted(p for p in (REPO / "corpus").rglob("*") if p.suffix.lower() == ".eds")

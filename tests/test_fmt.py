@@ -9,7 +9,7 @@ from click.testing import CliRunner
 
 import edsconv
 from edsconv.cli import cli
-from edsconv.eds_canonical import canonical, write_canonical
+from edsconv.eds.canonical import canonical, write_canonical
 from tests.conftest import REPO
 
 MESSY = """[Device]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 import edsconv
-from edsconv.syntax import Group, Scalar, String, ValueKind, stringi_members
+from edsconv.eds.syntax import Group, Scalar, String, ValueKind, stringi_members
 
 from conftest import codes, parse_ok, values
 

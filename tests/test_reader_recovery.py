@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 import edsconv
-from edsconv.eds_writer import write
+from edsconv.eds.writer import write
 
 from conftest import codes, parse_ok
 

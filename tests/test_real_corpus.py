@@ -7,8 +7,8 @@ import functools
 import pytest
 
 import edsconv
-from edsconv.eds_writer import write
-from edsconv.syntax import EdsFile
+from edsconv.eds.writer import write
+from edsconv.eds.syntax import EdsFile
 
 from conftest import SHARED_REAL
 

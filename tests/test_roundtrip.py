@@ -21,14 +21,14 @@ from hypothesis import strategies as st
 from lxml import etree
 
 import edsconv
-from edsconv.convert import profile_documents
+from edsconv.xml.convert import profile_documents
 from edsconv.diff import diff
-from edsconv.eds_canonical import device_to_eds
-from edsconv.eds_writer import write
+from edsconv.eds.canonical import device_to_eds
+from edsconv.eds.writer import write
 from edsconv.model import Device, Parameter
 from edsconv.spec_tables import DATA_TYPES_BY_NAME
-from edsconv.xml_commnet import read_commnet_profile
-from edsconv.xml_common import Header
+from edsconv.xml.commnet import read_commnet_profile
+from edsconv.xml.common import Header
 
 from conftest import REPO, SHARED_REAL
 
@@ -38,7 +38,7 @@ REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if
 
 def round_trip(device: Device, stem: str = "x") -> Device:
     """Device -> both profiles (validated) -> Device -> canonical EDS text -> Device."""
-    from edsconv.xml_device import read_device_profile
+    from edsconv.xml.device import read_device_profile
 
     header = Header.derive(device, stem)
     device_xml, commnet_xml = profile_documents(device, header, stem)  # raises if either is invalid

@@ -9,10 +9,10 @@ from pathlib import Path
 from click.testing import CliRunner
 
 import edsconv
-from edsconv import validate
+from edsconv.xml import validate
 from edsconv.cli import cli
 from edsconv.report import all_rules
-from edsconv.xmlsafe import read_xml
+from edsconv.xml.safe import read_xml
 
 from conftest import REPO
 

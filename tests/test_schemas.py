@@ -10,8 +10,8 @@ import xmlschema
 from lxml import etree
 
 from edsconv.resources import data_dir
-from edsconv.schemas import PROFILE_KINDS, load_schema
-from edsconv.validate import validate_file
+from edsconv.xml.schemas import PROFILE_KINDS, load_schema
+from edsconv.xml.validate import validate_file
 
 CORPUS = Path(__file__).resolve().parents[1] / "corpus" / "xml"
 VALIDATED_KINDS = [kind for kind in PROFILE_KINDS if kind.xsd]

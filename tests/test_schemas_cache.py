@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 import xmlschema
 
-from edsconv import schemas
-from edsconv.xmlsafe import read_xml
+from edsconv.xml import schemas
+from edsconv.xml.safe import read_xml
 
 CORPUS = Path(__file__).resolve().parents[1] / "corpus" / "xml"
 XSD = "CIP_Device_Profile.xsd"  # XSD 1.1, with assertions: the hardest one to round-trip

@@ -9,7 +9,7 @@ import pytest
 
 import edsconv
 from edsconv.model import MODULE, Reference
-from edsconv.values import PathItem, Revision
+from edsconv.model.values import PathItem, Revision
 
 from conftest import REPO
 

@@ -14,7 +14,7 @@ from click.testing import CliRunner
 import edsconv
 from edsconv.cli import cli
 from edsconv.show import SECTIONS, decode_path, describe, render
-from edsconv.values import PathItem
+from edsconv.model.values import PathItem
 
 REPO = Path(__file__).resolve().parents[1]
 EXAMPLE = REPO / "corpus" / "examples" / "io_adapter.eds"

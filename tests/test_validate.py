@@ -14,7 +14,7 @@ from click.testing import CliRunner
 from lxml import etree
 
 from edsconv.cli import cli
-from edsconv.validate import detect_kind
+from edsconv.xml.validate import detect_kind
 
 REPO = Path(__file__).resolve().parents[1]
 CORPUS = REPO / "corpus" / "xml"

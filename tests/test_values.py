@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from edsconv import spec_tables as tables
-from edsconv.values import (
+from edsconv.model.values import (
     Revision,
     StringIMember,
     ValueNote,

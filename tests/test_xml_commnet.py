@@ -10,9 +10,9 @@ from lxml import etree
 
 import edsconv
 from edsconv.model import MODULE, Connection, Device, Port, Reference
-from edsconv.values import PathItem
-from edsconv.xml_common import EDSCONV, Header, serialise
-from edsconv.xml_commnet import commnet_profile, read_commnet_profile
+from edsconv.model.values import PathItem
+from edsconv.xml.common import EDSCONV, Header, serialise
+from edsconv.xml.commnet import commnet_profile, read_commnet_profile
 
 from conftest import REPO, SHARED_REAL
 
@@ -244,7 +244,7 @@ def test_a_device_without_ethernetip_gets_no_filled_objects():
 # --- reading profiles edsconv did not write --------------------------------------------------
 
 def test_reads_the_complete_example_profile():
-    from edsconv.xmlsafe import read_xml
+    from edsconv.xml.safe import read_xml
 
     device = Device()
     root = read_xml(REPO / "corpus" / "xml" / "ethernetip-commnet" / "valid-complete.xml").tree.getroot()

@@ -9,10 +9,10 @@ from lxml import etree
 
 import edsconv
 from edsconv.model import MODULE, Device, Reference
-from edsconv.values import PathItem, Revision
-from edsconv.xml_common import EDSCONV, Header, serialise
-from edsconv.xml_device import DEVICE_PROFILE_PARTS, device_profile, equal_parts, read_device_profile
-from edsconv.xmlsafe import parse_xml
+from edsconv.model.values import PathItem, Revision
+from edsconv.xml.common import EDSCONV, Header, serialise
+from edsconv.xml.device import DEVICE_PROFILE_PARTS, device_profile, equal_parts, read_device_profile
+from edsconv.xml.safe import parse_xml
 
 from conftest import REPO, SHARED_REAL
 

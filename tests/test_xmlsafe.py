@@ -6,7 +6,7 @@ import time
 
 import pytest
 
-from edsconv.xmlsafe import MAX_XML_BYTES, UnsafeXmlError, XmlSyntaxError, XmlTooLargeError, parse_xml, read_xml
+from edsconv.xml.safe import MAX_XML_BYTES, UnsafeXmlError, XmlSyntaxError, XmlTooLargeError, parse_xml, read_xml
 
 LAUGHS = "".join(f'<!ENTITY lol{n} "{f"&lol{n - 1};" * 10}">' for n in range(1, 10))
 BILLION_LAUGHS = f'<?xml version="1.0"?><!DOCTYPE r [<!ENTITY lol0 "lol">{LAUGHS}]><r a="&lol9;">&lol9;</r>'

@@ -2,9 +2,9 @@
 
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.model import Device
-from edsconv.reader import load, parse
-from edsconv.semantic import build
-from edsconv.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, ValueKind
+from edsconv.eds.reader import load, parse
+from edsconv.model.build import build
+from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, ValueKind
 
 
 def analyse(eds: EdsFile) -> tuple[Device, list[Diagnostic]]:

@@ -9,7 +9,7 @@ keyword and by their values as written.
 
 Each :class:`Change` says what changed (``Param3 default``, ``Assem100 member 2``,
 ``Connection1 O=>T RPI``, ``identity.product_code``) with the old and new value
-spelled as in an EDS (:func:`edsconv.eds_canonical.render_value`).
+spelled as in an EDS (:func:`edsconv.eds.canonical.render_value`).
 """
 
 from __future__ import annotations
@@ -34,8 +34,8 @@ from edsconv.model import (
     Parameter,
     Reference,
 )
-from edsconv.syntax import Group, Scalar, String
-from edsconv.values import PathItem, StringIMember
+from edsconv.eds.syntax import Group, Scalar, String
+from edsconv.model.values import PathItem, StringIMember
 
 #: Categories of changes, in the order the text output lists them.
 CATEGORIES = ("identity", "params", "assemblies", "connections", "others")
@@ -107,7 +107,7 @@ def same(a: Any, b: Any) -> bool:
 
 def display(value: Any, type_name: str = "") -> str | None:
     """A value as it would be written in an EDS: ``0x0010``, ``"Speed"``, ``Param3``."""
-    from edsconv.eds_canonical import render_value
+    from edsconv.eds.canonical import render_value
 
     if value is None:
         return None
@@ -342,8 +342,8 @@ def diff_command(old_file: Path, new_file: Path, output_format: str) -> int:
     cannot be read.
     """
     from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
-    from edsconv.reader import load
-    from edsconv.semantic import build
+    from edsconv.eds.reader import load
+    from edsconv.model.build import build
 
     devices = []
     for path in (old_file, new_file):

@@ -21,9 +21,9 @@ from pathlib import Path
 import click
 
 from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
-from edsconv.reader import load
+from edsconv.eds.reader import load
 from edsconv.report import FORMATTERS, FileReport, all_rules
-from edsconv.syntax import EdsFile
+from edsconv.eds.syntax import EdsFile
 
 INTERNAL_ERROR = rule("EDS000", Severity.ERROR, "edsconv",
                       "edsconv could not check this file: it is unreadable, or edsconv failed on it (please report that)")

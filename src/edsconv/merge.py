@@ -5,7 +5,7 @@ rack) describes what it carries for a module with ``ProxyParamN``,
 ``ProxyAssemN`` and ``ProxyConnectN``; the module (the proxied device, without
 CIP of its own) describes its side with ``ProxiedParamN``, ``ProxiedAssemN``
 and ``ProxiedConnectN``. This module combines them, on the syntax level: the
-result is syntax :class:`~edsconv.syntax.Entry` objects whose fields are
+result is syntax :class:`~edsconv.eds.syntax.Entry` objects whose fields are
 copies of the input fields, spelled as written.
 
 **Which files belong together** (C.4.1.5.3.1: "when both EDS files specify a
@@ -54,7 +54,7 @@ import click
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Rule, Severity, has_errors, rule
 from edsconv.model import MODULE, MODULE_MEMBER_LIST
-from edsconv.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, Value, ValueKind
+from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, Value, ValueKind
 
 _M = "C.4.1.5.3"
 NO_MATCHING_RACK = rule("EDS401", Severity.ERROR, "C.4.1.5.3.1",
@@ -119,7 +119,7 @@ class MergeResult:
 
     def text(self, newline: str = "\n") -> str:
         """The combined entries as EDS text, one block per merged module."""
-        from edsconv.eds_writer import write
+        from edsconv.eds.writer import write
 
         blocks = [write(item.eds(), newline) for item in self.merges if item.sections]
         return newline.join(blocks)
@@ -180,7 +180,7 @@ def rack_keys(eds: EdsFile) -> dict[str, tuple[int, ...]]:
 
     Rack entries whose key fields are not numbers of their types are left out.
     """
-    from edsconv.values import ValueProblem, to_integer
+    from edsconv.model.values import ValueProblem, to_integer
 
     keys: dict[str, tuple[int, ...]] = {}
     for section in eds.sections:
@@ -316,7 +316,7 @@ class _Merger:
             fields[position] = Field(Scalar(summed), target.comments)
 
     def _param_type(self, fields: list[Field]) -> tables.DataType | None:
-        from edsconv.values import ValueProblem, to_integer
+        from edsconv.model.values import ValueProblem, to_integer
 
         if len(fields) <= PARAM_DATA_TYPE_POSITION or _empty(fields[PARAM_DATA_TYPE_POSITION]):
             return None
@@ -329,7 +329,7 @@ class _Merger:
     @staticmethod
     def _sum(value: Value, addend: Value, data_type: tables.DataType | None) -> str:
         """The spelling of ``value + addend``, or ``"!reason"``."""
-        from edsconv.values import ValueNote, ValueProblem, convert
+        from edsconv.model.values import ValueNote, ValueProblem, convert
 
         if data_type is None or data_type.kind not in ("unsigned", "signed", "bits", "real", "time", "bool"):
             return "!the parameter's data type is not a number type"
@@ -457,8 +457,8 @@ def merge_command(adapter: Path, modules: tuple[Path, ...], output: Path | None)
     entry or an entry cannot be combined.
     """
     from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
-    from edsconv.reader import load
-    from edsconv.xml_common import write_atomically
+    from edsconv.eds.reader import load
+    from edsconv.xml.common import write_atomically
 
     models = []
     for path in (adapter, *modules):

@@ -21,8 +21,8 @@ from urllib.parse import quote
 from edsconv.diagnostics import RULES, Diagnostic, Rule, Severity
 
 #: Every module that registers rules: importing them fills :data:`~edsconv.diagnostics.RULES`.
-RULE_MODULES = ("edsconv.reader", "edsconv.values", "edsconv.semantic", "edsconv.checks", "edsconv.validate",
-                "edsconv.lint", "edsconv.merge", "edsconv.convert", "edsconv.xml_device")
+RULE_MODULES = ("edsconv.eds.reader", "edsconv.model.values", "edsconv.model.build", "edsconv.checks", "edsconv.xml.validate",
+                "edsconv.lint", "edsconv.merge", "edsconv.xml.convert", "edsconv.xml.device")
 
 SARIF_VERSION = "2.1.0"
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"

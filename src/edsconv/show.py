@@ -32,7 +32,7 @@ from edsconv.model import (
     Parameter,
     Reference,
 )
-from edsconv.values import PathItem, Revision, StringIMember
+from edsconv.model.values import PathItem, Revision, StringIMember
 
 #: ``--section`` names -> the keys of the :func:`describe` document they show.
 SECTIONS: dict[str, tuple[str, ...]] = {

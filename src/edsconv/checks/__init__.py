@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.model import Device
-from edsconv.syntax import EdsFile
+from edsconv.eds.syntax import EdsFile
 
 
 @dataclass(slots=True)

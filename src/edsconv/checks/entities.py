@@ -24,9 +24,9 @@ from edsconv.model import (
     Parameter,
     Reference,
 )
-from edsconv.semantic import iter_references
-from edsconv.syntax import Entry
-from edsconv.values import PathItem
+from edsconv.model.build import iter_references
+from edsconv.eds.syntax import Entry
+from edsconv.model.values import PathItem
 
 
 UNDEFINED_REFERENCE = rule("EDS301", Severity.ERROR, "C.4.1.4.8",

@@ -22,8 +22,8 @@ from collections.abc import Iterator
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
 from edsconv.diagnostics import Diagnostic, Rule, Severity, rule
-from edsconv.semantic import iter_references
-from edsconv.syntax import Entry, Field, Scalar, Section, String
+from edsconv.model.build import iter_references
+from edsconv.eds.syntax import Entry, Field, Scalar, Section, String
 
 ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 REQUIRED, RESERVED = tables.Presence.REQUIRED, tables.Presence.RESERVED

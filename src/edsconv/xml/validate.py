@@ -18,8 +18,8 @@ from lxml import etree
 
 from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
 from edsconv.report import format_json
-from edsconv.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
-from edsconv.xmlsafe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
+from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
+from edsconv.xml.safe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
 
 NOT_WELL_FORMED = rule("XML001", Severity.ERROR, "XML 1.0", "the file is not well-formed XML")
 UNSAFE_XML = rule("XML002", Severity.ERROR, "ISO 15745-1",

@@ -36,8 +36,8 @@ from lxml import etree
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.model import MODULE, Connection, Device, Port, Reference
-from edsconv.values import OUT_OF_RANGE, WRONG_KIND, PathItem, ValueProblem, path_items
-from edsconv.xml_common import (
+from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, PathItem, ValueProblem, path_items
+from edsconv.xml.common import (
     EDSCONV,
     NSMAP,
     Header,

@@ -36,7 +36,7 @@ from typing import Any
 import click
 
 from edsconv import spec_tables as tables
-from edsconv.lexicon import scalar_kind
+from edsconv.eds.lexicon import scalar_kind
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -47,9 +47,9 @@ from edsconv.model import (
     Parameter,
     Reference,
 )
-from edsconv.semantic import _Builder
-from edsconv.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, Unparsed
-from edsconv.values import PathItem, Revision, StringIMember
+from edsconv.model.build import _Builder
+from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, Unparsed
+from edsconv.model.values import PathItem, Revision, StringIMember
 
 # ---------------------------------------------------------------------------------------
 # Order
@@ -128,7 +128,7 @@ def hex_text(value: int, digits: int) -> Scalar:
 
 
 def _fits(text: str, type_name: str, value: float) -> bool:
-    from edsconv.values import ValueProblem, to_real
+    from edsconv.model.values import ValueProblem, to_real
 
     try:
         return to_real(Scalar(text), type_name) == value
@@ -159,7 +159,7 @@ def _keyword_like(text: str) -> bool:
 
 
 def plain_value(value: Any, keywords: bool = False):
-    """A value kept as plain data (:func:`edsconv.semantic.plain`): a text that reads
+    """A value kept as plain data (:func:`edsconv.model.build.plain`): a text that reads
     as a number, date, time or ``*`` goes back as a scalar; a keyword as a scalar
     when ``keywords`` (fields typed Keyword), else as a string; lists as groups."""
     if value is None:
@@ -761,7 +761,7 @@ def _write_entry(out: _Out, section: str, entry: Entry) -> None:
 
 def _write_field(out: _Out, item: Field, is_last: bool, first_on_line: bool, closer: str = ";") -> None:
     """One field: its value, its comma (or the closer) and its comments, after the
-    rules of :mod:`edsconv.syntax` (a comment belongs to the last field started before it)."""
+    rules of :mod:`edsconv.eds.syntax` (a comment belongs to the last field started before it)."""
     value = item.value
     if not first_on_line and value is not None and out.current.strip():
         out.text(" ", _FIELD_INDENT)
@@ -826,8 +826,8 @@ def fmt_command(files: tuple[Path, ...], check: bool, show_diff: bool) -> int:
     to change or a file has syntax errors, 2 when a file cannot be read or written.
     """
     from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
-    from edsconv.reader import load
-    from edsconv.xml_common import write_atomically
+    from edsconv.eds.reader import load
+    from edsconv.xml.common import write_atomically
 
     exit_code = EXIT_CLEAN
     changed = unchanged = 0

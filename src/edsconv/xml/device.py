@@ -50,10 +50,10 @@ from edsconv.model import (
     Reference,
     Scaling,
 )
-from edsconv.semantic import iter_references, reference
-from edsconv.syntax import Scalar, String
-from edsconv.values import PathItem, Revision, StringIMember, path_items
-from edsconv.xml_common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
+from edsconv.model.build import iter_references, reference
+from edsconv.eds.syntax import Scalar, String
+from edsconv.model.values import PathItem, Revision, StringIMember, path_items
+from edsconv.xml.common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
 
 BAD_DEVICE_VALUE = rule("XML201", Severity.WARNING, "C.2.1.2",
                         "A device profile element holds a value edsconv cannot read; the model field stays empty")

@@ -5,7 +5,7 @@ applies :class:`_Builder` while it parses, so entries become model objects as
 they are reduced and no parse tree is kept. A syntax error never stops the
 read: a missing ``;`` is inserted and reported; any other error is reported,
 the text up to the next ``;`` or statement start is kept verbatim as
-:class:`~edsconv.syntax.Unparsed`, and parsing resumes there.
+:class:`~edsconv.eds.syntax.Unparsed`, and parsing resumes there.
 """
 
 from __future__ import annotations
@@ -20,9 +20,9 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
 from edsconv.diagnostics import Diagnostic, Severity, rule
-from edsconv.lexicon import grammar_text, lexicon
-from edsconv.source import LineIndex, decode
-from edsconv.syntax import (
+from edsconv.eds.lexicon import grammar_text, lexicon
+from edsconv.eds.source import LineIndex, decode
+from edsconv.eds.syntax import (
     Comment,
     EdsFile,
     Entry,

@@ -29,15 +29,15 @@ class LazyGroup(click.Group):
 
     #: command name -> "module:attribute" of its click command
     lazy = {
-        "validate": "edsconv.validate:validate_command",
+        "validate": "edsconv.xml.validate:validate_command",
         "lint": "edsconv.lint:lint_command",
         "rules": "edsconv.lint:rules_command",
         "merge": "edsconv.merge:merge_command",
-        "fmt": "edsconv.eds_canonical:fmt_command",
+        "fmt": "edsconv.eds.canonical:fmt_command",
         "diff": "edsconv.diff:diff_command",
         "show": "edsconv.show:show_command",
-        "eds2xml": "edsconv.convert:eds2xml_command",
-        "xml2eds": "edsconv.convert:xml2eds_command",
+        "eds2xml": "edsconv.xml.convert:eds2xml_command",
+        "xml2eds": "edsconv.xml.convert:xml2eds_command",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:
@@ -69,8 +69,8 @@ def _exit_with(ctx: click.Context, code: int | None) -> None:
               help="text: one diagnostic per line; json: the syntax model with its diagnostics.")
 def parse_command(files: tuple[Path, ...], output_format: str) -> int:
     """Read EDS files and report their syntax diagnostics (or print the model as JSON)."""
-    from edsconv.reader import load
-    from edsconv.syntax import to_json
+    from edsconv.eds.reader import load
+    from edsconv.eds.syntax import to_json
 
     exit_code = EXIT_CLEAN
     models = []

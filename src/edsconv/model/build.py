@@ -38,8 +38,8 @@ from edsconv.model import (
     Reference,
     Scaling,
 )
-from edsconv.syntax import EdsFile, Entry, Group, Scalar, String, Value, ValueKind
-from edsconv.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
+from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String, Value, ValueKind
+from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
 
 OBSOLETE_DATA_TYPE = rule("EDS112", Severity.WARNING, "C.4.1.4.6",
                           "A parameter names its data type by an obsolete Table C.16 identifier")

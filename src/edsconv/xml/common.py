@@ -137,12 +137,12 @@ def file_description_attributes(device: Device, header: Header) -> dict[str, str
 def serialise(root: etree._Element, schema_kind: str) -> bytes:
     """The document's bytes, after validating it against its schema.
 
-    ``schema_kind`` names a profile kind of :mod:`edsconv.schemas` (``cip-device``,
+    ``schema_kind`` names a profile kind of :mod:`edsconv.xml.schemas` (``cip-device``,
     ``ethernetip-commnet``, ``eds-device-wrapper`` ...). Raises
     :class:`InvalidProfile` with the validation report when the document is not
     valid: that is a bug in edsconv, and no file must be written.
     """
-    from edsconv.schemas import kind_named, load_schema
+    from edsconv.xml.schemas import kind_named, load_schema
 
     data = etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
     schema = load_schema(kind_named(schema_kind).xsd)

@@ -1,11 +1,11 @@
 """The semantic model of an EDS: a typed description of the device.
 
-Built from the syntax model by :func:`edsconv.semantic.build`; the XML reader
+Built from the syntax model by :func:`edsconv.model.build.build`; the XML reader
 builds the same model. Every object keeps the syntax ``entry`` it came from
 (None when it was built otherwise), so positions and the original spelling
 stay reachable. Values are Python values: ``int``, ``float``, ``str``,
-``datetime.date``/``time``, :class:`~edsconv.values.Revision`, paths as tuples
-of :class:`~edsconv.values.PathItem`, references as :class:`Reference`.
+``datetime.date``/``time``, :class:`~edsconv.model.values.Revision`, paths as tuples
+of :class:`~edsconv.model.values.PathItem`, references as :class:`Reference`.
 A field whose value could not be converted is None (a diagnostic says why);
 a field that a Proxy entry defers to its Proxied entry holds :data:`MODULE`.
 """
@@ -18,8 +18,8 @@ from typing import Any, NamedTuple
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
-from edsconv.syntax import EdsFile, Entry, Section
-from edsconv.values import PathItem, Revision, StringIMember
+from edsconv.eds.syntax import EdsFile, Entry, Section
+from edsconv.model.values import PathItem, Revision, StringIMember
 
 #: The field keyword of C.4.1.5.3: "take this field from the Proxied entry".
 MODULE = tables.MODULE_KEYWORD

@@ -1,14 +1,14 @@
 """Syntax model -> EDS text.
 
 Values are written as they were spelled and every comment is placed where the
-reader's ownership rule (see :mod:`edsconv.syntax`) gives it back to the same
+reader's ownership rule (see :mod:`edsconv.eds.syntax`) gives it back to the same
 node, so ``parse(write(model)) == model``. Entries without comments go on one
 line; a comment ends its line and the entry continues on the next.
 """
 
 from __future__ import annotations
 
-from edsconv.syntax import Comment, EdsFile, Entry, Field, Group, Section, Unparsed
+from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Section, Unparsed
 
 _INDENT = "    "
 

@@ -20,8 +20,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from edsconv.diagnostics import Diagnostic
-from edsconv.lexicon import scalar_kind
-from edsconv.source import LineIndex
+from edsconv.eds.lexicon import scalar_kind
+from edsconv.eds.source import LineIndex
 
 
 class Located:

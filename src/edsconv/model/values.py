@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Rule, Severity, rule
-from edsconv.syntax import Group, Scalar, String, Value, ValueKind
+from edsconv.eds.syntax import Group, Scalar, String, Value, ValueKind
 
 WRONG_KIND = rule("EDS101", Severity.ERROR, "C.4.1.3", "A field holds a value of the wrong kind for its data type")
 OUT_OF_RANGE = rule("EDS102", Severity.ERROR, "C.4.1.3.7", "A number lies outside the range of its data type")

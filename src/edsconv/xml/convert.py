@@ -24,7 +24,7 @@ from lxml import etree
 from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
 from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
 from edsconv.model import Device
-from edsconv.xml_common import Header, InvalidProfile, header_element, serialise, write_atomically
+from edsconv.xml.common import Header, InvalidProfile, header_element, serialise, write_atomically
 
 WRAPPER_NOT_FOUND = rule("XML101", Severity.ERROR, "C.2.2.1",
                          "The EDS a wrapper profile references is not next to it")
@@ -46,8 +46,8 @@ class Output:
 
 def profile_documents(device: Device, header: Header, stem: str) -> list[Output]:
     """The device and communication network profiles, validated."""
-    from edsconv.xml_commnet import commnet_profile
-    from edsconv.xml_device import device_profile
+    from edsconv.xml.commnet import commnet_profile
+    from edsconv.xml.device import device_profile
 
     return [Output(f"{stem}_device.xml", serialise(device_profile(device, header), "cip-device")),
             Output(f"{stem}_commnet.xml", serialise(commnet_profile(device, header), "ethernetip-commnet"))]
@@ -181,9 +181,9 @@ def find_wrapped_eds(xml_path: Path, root: etree._Element) -> tuple[Path | None,
 def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnostic]]:
     """Read, validate and convert XML profiles into one Device; a wrapper resolves to its EDS."""
     from edsconv import build, load
-    from edsconv.validate import read_and_validate
-    from edsconv.xml_commnet import read_commnet_profile
-    from edsconv.xml_device import read_device_profile
+    from edsconv.xml.validate import read_and_validate
+    from edsconv.xml.commnet import read_commnet_profile
+    from edsconv.xml.device import read_device_profile
 
     device = Device()
     diagnostics: list[Diagnostic] = []
@@ -221,8 +221,8 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
 @click.option("--force", is_flag=True, help="Overwrite an existing output file.")
 def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool) -> int:
     """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS."""
-    from edsconv.eds_canonical import device_to_eds
-    from edsconv.eds_writer import write
+    from edsconv.eds.canonical import device_to_eds
+    from edsconv.eds.writer import write
 
     missing = [str(p) for p in profiles if not p.is_file()]
     if missing:

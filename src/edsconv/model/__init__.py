@@ -1,0 +1,18 @@
+"""The typed device: the semantic model of an EDS, built by :mod:`edsconv.model.build`.
+
+:mod:`edsconv.model.device` holds the classes (re-exported here), :mod:`edsconv.model.values`
+the C.4.1.3 notation rules that turn written values into typed ones.
+"""
+
+from edsconv.model.device import (
+    MODULE, MODULE_MEMBER_LIST, Reference, FileDescription, Identity, Classification, ParamClass,
+    Scaling, Parameter, ParameterGroup, AssemblyMember, Assembly, ConnectionEndpoint, Connection,
+    Port, Rack, Query, Modular, GenericEntry, GenericSection, CommentNote, Device,
+)
+
+__all__ = [
+    "Assembly", "AssemblyMember", "Classification", "CommentNote", "Connection",
+    "ConnectionEndpoint", "Device", "FileDescription", "GenericEntry", "GenericSection", "Identity",
+    "MODULE", "MODULE_MEMBER_LIST", "Modular", "ParamClass", "Parameter", "ParameterGroup", "Port",
+    "Query", "Rack", "Reference", "Scaling",
+]

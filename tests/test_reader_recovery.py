@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import codecs
+
 import pytest
 
 import edsconv
+from edsconv.eds.source import encode
 from edsconv.eds.writer import write
 
 from conftest import codes, parse_ok
@@ -29,6 +32,22 @@ def test_non_ascii_encodings_warn_once_and_decode(data, encoding):
     name = eds.sections[0].entry("Name").fields[0].value.text
     assert name == ("Caf\u00e9 \x81" if encoding == "latin-1" else "Caf\u00e9 \u00b5")
     assert eds.sections[0].entry("B").line == 5
+
+
+@pytest.mark.parametrize("encoding, bom", [
+    ("utf-16-le", codecs.BOM_UTF16_LE), ("utf-16-be", codecs.BOM_UTF16_BE),
+    ("utf-32-le", codecs.BOM_UTF32_LE), ("utf-32-be", codecs.BOM_UTF32_BE),
+])
+def test_wide_encodings_with_a_byte_order_mark_are_read_with_one_warning(encoding, bom):
+    data = bom + TEXT.replace("\n", "\r\n").encode(encoding)
+    eds = edsconv.parse(data)
+    assert codes(eds) == [("EDS005", 1, 1)]
+    assert encoding.upper() in eds.diagnostics[0].message
+    assert not eds.has_errors
+    assert (eds.encoding, eds.newline) == (encoding, "\r\n")
+    assert eds.sections[0].entry("Name").fields[0].value.text == "Caf\u00e9 \u00b5"
+    assert eds.sections[0].entry("B").line == 5
+    assert edsconv.parse(encode(write(eds), eds.encoding)) == eds
 
 
 def test_ascii_bytes_and_text_give_the_same_model():

@@ -37,6 +37,7 @@ import click
 
 from edsconv import spec_tables as tables
 from edsconv.eds.lexicon import scalar_kind
+from edsconv.eds.source import encode
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -808,7 +809,7 @@ def format_bytes(eds: EdsFile) -> bytes:
     the encoding cannot hold it)."""
     text = write_canonical(eds)
     try:
-        return text.encode(eds.encoding)
+        return encode(text, eds.encoding)
     except (UnicodeEncodeError, LookupError):
         return text.encode("utf-8")
 

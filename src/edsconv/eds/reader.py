@@ -21,7 +21,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from edsconv.diagnostics import Diagnostic, Severity, rule
 from edsconv.eds.lexicon import grammar_text, lexicon
-from edsconv.eds.source import LineIndex, decode
+from edsconv.eds.source import DecodedSource, LineIndex, decode
 from edsconv.eds.syntax import (
     Comment,
     EdsFile,
@@ -358,6 +358,14 @@ def parse(source: str | bytes, filename: str | None = None) -> EdsFile:
             gc.enable()
 
 
+def _not_ascii_message(decoded: DecodedSource) -> str:
+    if decoded.encoding.startswith(("utf-16", "utf-32")):
+        return (f"the file is saved as {decoded.encoding.upper()} (it starts with a byte order mark); "
+                "an EDS is ASCII text, so other tools may not read it")
+    return (f"the file is not plain ASCII (read as {decoded.encoding}); the first character outside "
+            f"ASCII is on line {decoded.first_non_ascii_line}")
+
+
 def _parse(source: str | bytes, filename: str | None) -> EdsFile:
     if isinstance(source, str):
         source = source.encode("utf-8")
@@ -370,8 +378,7 @@ def _parse(source: str | bytes, filename: str | None) -> EdsFile:
     eds.encoding, eds.newline = decoded.encoding, decoded.newline
     if decoded.first_non_ascii_line is not None:
         eds.diagnostics.append(Diagnostic.of(
-            NOT_ASCII, f"the file is not plain ASCII (read as {decoded.encoding}); the first character outside "
-            f"ASCII is on line {decoded.first_non_ascii_line}", decoded.first_non_ascii_line, 1, filename))
+            NOT_ASCII, _not_ascii_message(decoded), decoded.first_non_ascii_line, 1, filename))
     head = text[:_SNIFF_LENGTH]
     if _CANOPEN_SECTION.search(head) and not _CIP_FILE_SECTION.search(head):
         builder.report(CANOPEN_EDS, "this is a CANopen EDS (CiA 306: [FileInfo], [DeviceInfo], object "

@@ -1,8 +1,9 @@
 """Bytes to text: encoding detection, line ends, and offset -> line/column.
 
 An EDS is ASCII (C.4.1.3.2), but real files carry UTF-8 (with or without BOM)
-and Windows-1252 / Latin-1 text. We accept all of them and report one warning
-that names the first offending line, as real configuration tools do.
+and Windows-1252 / Latin-1 text, and some Windows tools save UTF-16 with a BOM.
+We accept all of them and report one warning that names the first offending
+line, as real configuration tools do.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ _LINE_START = re.compile(r"\n")
 @dataclass(frozen=True, slots=True)
 class DecodedSource:
     text: str
-    #: "ascii", "utf-8", "utf-8-sig" or "cp1252"/"latin-1"
+    #: "ascii", "utf-8", "utf-8-sig", "cp1252"/"latin-1", or one of the UTF-16/32 codecs of :data:`_WIDE_BOMS`
     encoding: str
     #: "\n", "\r\n" or "\r": what the file used first, so a writer can keep it.
     newline: str
@@ -27,8 +28,26 @@ class DecodedSource:
     first_non_ascii_line: int | None
 
 
+#: Byte order marks of the wide encodings, UTF-32 first: its little-endian BOM begins with UTF-16's.
+_WIDE_BOMS = ((codecs.BOM_UTF32_LE, "utf-32-le"), (codecs.BOM_UTF32_BE, "utf-32-be"),
+              (codecs.BOM_UTF16_LE, "utf-16-le"), (codecs.BOM_UTF16_BE, "utf-16-be"))
+
+
+def _wide_encoding(data: bytes) -> tuple[str, int] | None:
+    """The codec and BOM length of a UTF-16/UTF-32 file, recognised by its byte order mark."""
+    for bom, encoding in _WIDE_BOMS:
+        if data.startswith(bom):
+            return encoding, len(bom)
+    return None
+
+
 def decode(data: bytes) -> DecodedSource:
     """Decode EDS bytes and normalise every line end to ``\\n``."""
+    wide = _wide_encoding(data)
+    if wide is not None:
+        encoding, bom_length = wide
+        # The byte order mark is outside ASCII, so a wide file's first such character is on line 1.
+        return _with_newlines(data[bom_length:].decode(encoding, errors="replace"), encoding, 1)
     encoding = "ascii"
     if data.startswith(codecs.BOM_UTF8):
         data, encoding = data[len(codecs.BOM_UTF8):], "utf-8-sig"
@@ -46,12 +65,25 @@ def decode(data: bytes) -> DecodedSource:
                 text, encoding = data.decode("cp1252"), "cp1252"
             except UnicodeDecodeError:
                 text, encoding = data.decode("latin-1"), "latin-1"
+    return _with_newlines(text, encoding, first_line)
+
+
+def _with_newlines(text: str, encoding: str, first_line: int | None) -> DecodedSource:
+    """The source with every line end normalised to ``\\n``, remembering the first one used."""
     newline = "\n"
     crlf = text.find("\r")
     if crlf != -1:
         newline = "\r\n" if text.startswith("\r\n", crlf) else "\r"
         text = text.replace("\r\n", "\n").replace("\r", "\n")
     return DecodedSource(text, encoding, newline, first_line)
+
+
+def encode(text: str, encoding: str) -> bytes:
+    """``text`` in the encoding a file was read in, with the byte order mark it had."""
+    for bom, wide in _WIDE_BOMS:
+        if wide == encoding:
+            return bom + text.encode(encoding)
+    return text.encode(encoding)
 
 
 class LineIndex:

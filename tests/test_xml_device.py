@@ -93,8 +93,9 @@ def test_io_adapter_elements(io_adapter):
     # what the schema has no place for: the [Assembly] Revision and the comments
     values = {v.get("path"): v for v in body.iter(EDSCONV + "Value")}
     assert values["assembly_revision"].get("kind") == "int" and values["assembly_revision"].text == "2"
-    comments = body.find(f"DeviceFunction/{EDSCONV}Comments")
-    assert '"keyword": "Param1", "field": 0, "text": " reserved, shall equal 0"' in comments.text
+    comments = body.findall(f"DeviceFunction/{EDSCONV}Comments/{EDSCONV}Comment")
+    assert {"section": "Params", "keyword": "Param1", "field": "0"} in [dict(c.attrib) for c in comments]
+    assert " reserved, shall equal 0" in [c.text for c in comments]
 
 
 def test_io_adapter_read_back(io_adapter):

@@ -420,17 +420,18 @@ def _write_extensions(function, device: Device) -> None:
     for section in device.other_sections:
         _write_entries(etree.SubElement(function, EDSCONV + "Section", name=section.name), section.entries)
     if device.comments:
-        # one JSON object a line: thousands of comment elements would make validation slow
-        lines = [_comment_line(note) for note in device.comments]
-        etree.SubElement(function, EDSCONV + "Comments", format="json-lines").text = "\n" + "\n".join(lines) + "\n"
+        comments = etree.SubElement(function, EDSCONV + "Comments")
+        for note in device.comments:
+            _write_comment(comments, note)
 
 
-def _comment_line(note: CommentNote) -> str:
-    item = {"section": note.section, "keyword": note.keyword, "field": note.field, "leading": note.leading or None,
-            "text": note.text}
-    item = {key: value for key, value in item.items() if value is not None}
-    line = json.dumps(item, ensure_ascii=False)
-    return line if is_xml_text(line) else json.dumps(item)
+def _write_comment(parent, note: CommentNote) -> None:
+    """One ``edsconv:Comment``: an element each, so that no text node grows with the file."""
+    attributes = {"section": note.section, "keyword": note.keyword,
+                  "field": None if note.field is None else str(note.field), "leading": "true" if note.leading else None}
+    element = etree.SubElement(parent, EDSCONV + "Comment",
+                               {key: xml_text(value) for key, value in attributes.items() if value is not None})
+    _set_text(element, note.text)
 
 
 def _write_entries(parent, entries: list[GenericEntry]) -> None:
@@ -665,8 +666,7 @@ def read_device_profile(root, device: Device) -> list[Diagnostic]:
                 elif element.tag == EDSCONV + "Section":
                     sections.append(GenericSection(element.get("name", ""), _read_entries(element)))
                 elif element.tag == EDSCONV + "Comments":
-                    comments.extend(_read_comment(json.loads(line)) for line in (element.text or "").split("\n")
-                                    if line.strip())
+                    comments.extend(_read_comment(c) for c in element if c.tag == EDSCONV + "Comment")
                 elif element.tag == EDSCONV + "Values":
                     values.extend(v for v in element if v.tag == EDSCONV + "Value")
             except (ValueError, TypeError, KeyError) as error:
@@ -693,9 +693,10 @@ def _read_entries(parent) -> list[GenericEntry]:
             for entry in parent if entry.tag == EDSCONV + "Entry"]
 
 
-def _read_comment(item: dict) -> CommentNote:
-    return CommentNote(item["section"], item.get("keyword"), item.get("field"), item["text"],
-                       bool(item.get("leading", False)))
+def _read_comment(element) -> CommentNote:
+    field = element.get("field")
+    return CommentNote(element.get("section", ""), element.get("keyword"), None if field is None else int(field),
+                       _get_text(element), element.get("leading") == "true")
 
 
 class _Reader:

@@ -25,6 +25,7 @@ import pytest
 from conftest import REPO, SHARED_REAL
 from edsconv import cip_tables as cip
 from edsconv import spec_tables as spec
+from edsconv.diagnostics import Severity
 from edsconv.eds.reader import load
 from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String
 from edsconv.lint import lint_file
@@ -388,3 +389,121 @@ def test_real_icon_contents_are_base64():
             base64.b64decode(entry.fields[0].value.text, validate=True)
             icons += 1
     assert icons == cip.entry_spec("Device", "IconContents").provenance.files
+
+
+# --- our own files: corpus/cip ------------------------------------------------------------
+
+
+def ico_problem(text: str) -> str | None:
+    """Why an IconContents text is not the base64 of an ICO whose images lie inside it."""
+    try:
+        data = base64.b64decode(text, validate=True)
+    except binascii.Error:
+        return "not base64"
+    if len(data) < 6 or data[:4] != b"\0\0\1\0" or int.from_bytes(data[4:6], "little") == 0:
+        return "no ICO header"
+    for index in range(int.from_bytes(data[4:6], "little")):
+        entry = data[6 + 16 * index:22 + 16 * index]
+        size, offset = int.from_bytes(entry[8:12], "little"), int.from_bytes(entry[12:16], "little")
+        if len(entry) < 16 or offset + size > len(data):
+            return "an image lies beyond the end"
+    return None
+
+
+def _found_fields(eds: EdsFile):
+    for section, entry, found in newer_entries(eds):
+        if found is not None and field_problems(entry, found):
+            yield section, entry.keyword
+
+
+def _found_class_codes(eds: EdsFile):
+    for section in eds.sections:
+        code, expected = section.entry("Object_Class_Code"), cip.class_id_of(section.name)
+        if code is not None and expected is not None and values.convert(code.fields[0].value, "UDINT") != expected:
+            yield section.name, code.keyword
+
+
+def _found_duplicates(eds: EdsFile):
+    for section in eds.sections:
+        keywords = [e.keyword for e in section.entries]
+        yield from {(section.name, k) for k in keywords if keywords.count(k) > 1}
+
+
+def _found_label_instances(eds: EdsFile):
+    link = eds.section("Ethernet Link Class")
+    if link is not None and link.entry("MaxInst") is not None:
+        max_inst = values.convert(link.entry("MaxInst").fields[0].value, "UINT")
+        for entry in link.entries:
+            prefix, number = spec.split_numbered(entry.keyword)
+            if prefix == "InterfaceLabel" and number > max_inst:
+                yield link.name, entry.keyword
+
+
+def _found_icons(eds: EdsFile):
+    device = eds.section("Device")
+    icon = device.entry("IconContents") if device else None
+    if icon is not None and ico_problem(icon.fields[0].value.text):
+        yield "Device", "IconContents"
+
+
+def _found_required(eds: EdsFile):
+    for section in eds.sections:
+        table = cip.section_spec(section.name)
+        for entry_spec in table.entries if table else ():
+            if entry_spec.presence is spec.Presence.REQUIRED and section.entry(entry_spec.keyword) is None:
+                yield section.name, entry_spec.keyword
+
+
+DETECTORS = {"field": _found_fields, "class-code": _found_class_codes, "duplicate": _found_duplicates,
+             "label-instance": _found_label_instances, "icon": _found_icons, "required-entry": _found_required}
+
+
+def manifest() -> list[dict[str, str]]:
+    with (CIP_CORPUS / "MANIFEST.tsv").open(newline="") as handle:
+        return list(csv.DictReader(handle, delimiter="\t"))
+
+
+def test_manifest_lists_every_file_and_each_family_has_a_clean_file():
+    rows = manifest()
+    assert sorted(r["file"] for r in rows) == sorted(p.name for p in CIP_CORPUS.glob("*.eds"))
+    families = {r["file"].split("_")[0] for r in rows}
+    clean = {r["file"].split("_")[0] for r in rows if r["kind"] == "clean"}
+    assert families == clean
+
+
+@pytest.mark.parametrize("row", manifest(), ids=lambda row: row["file"])
+def test_cip_file_has_exactly_its_fault(row):
+    eds = load(CIP_CORPUS / row["file"])
+    syntax_errors = {d.code for d in eds.diagnostics if d.severity is Severity.ERROR}
+    assert syntax_errors == ({"EDS009"} if row["kind"] == "duplicate" else set()), row["file"]
+    found = {kind: set(detect(eds)) for kind, detect in DETECTORS.items()}
+    everything = set().union(*found.values())
+    if row["kind"] == "clean":
+        assert everything == set()
+    else:
+        target = (row["section"], row["entry"])
+        assert target in found[row["kind"]]
+        assert everything == {target}
+
+
+@pytest.mark.parametrize("row", [r for r in manifest() if r["kind"] != "clean"], ids=lambda row: row["file"])
+def test_fault_severity_follows_the_source(row):
+    """An error only where a documented fact (eds-pie, the 2003 text) is broken."""
+    if row["kind"] == "class-code":
+        table = cip.section_spec(row["section"])
+    elif row["kind"] == "duplicate":
+        assert (row["basis"], row["proposed_code"], row["severity"]) == ("2003 text", "EDS009", "error")
+        return
+    else:
+        table = cip.entry_spec(row["section"], row["entry"])
+    practice = table.provenance.practice_only or row["kind"] in ("icon", "label-instance")
+    assert row["basis"] == ("practice" if practice else "eds-pie")
+    assert row["severity"] == ("warning" if practice else "error")
+
+
+@pytest.mark.parametrize("row", manifest(), ids=lambda row: row["file"])
+def test_cip_files_lint_today_without_errors_but_duplicates(row):
+    """Today's lint sees the newer content as notes only; phase 2 adds the checks."""
+    report = lint_file(str(CIP_CORPUS / row["file"]))
+    errors = {d.code for d in report.diagnostics if d.severity is Severity.ERROR}
+    assert errors == ({"EDS009"} if row["kind"] == "duplicate" else set())

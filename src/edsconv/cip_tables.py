@@ -132,7 +132,7 @@ COMMON_OBJECT_ENTRIES: tuple[EntrySpec, ...] = (
            _src(f"{_C}.Instance_Attributes", 18, "decimal or hex attribute IDs"),
            _fields(_src(f"{_C}.Instance_Attributes"), ("Attribute ID", "UINT", O, {"repeats": True}))),
     _entry(_COMMON, "Class_Services", "Class services the device supports",
-           _src(f"{_C}.Class_Services", 18, "hex codes (0x01, 0x0E), or brace groups {0x0E,*} in 15 files"),
+           _src(f"{_C}.Class_Services", 18, "hex codes (0x01, 0x0E), or brace groups {0x0E,*} in 14 files"),
            _fields(_src(f"{_C}.Class_Services"), ("Service", _SERVICE_LIST, O, {"repeats": True}))),
     _entry(_COMMON, "Instance_Services", "Instance services the device supports",
            _src(f"{_C}.Instance_Services", 18,

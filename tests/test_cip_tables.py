@@ -6,7 +6,9 @@
   they write beyond the 2003 text is known or vendor-specific, the file counts
   recorded as evidence are right, every value they write fits the table's type;
 - against our own files in corpus/cip (MANIFEST.tsv): the clean files fit the
-  tables, each fault file breaks them in exactly the one place it names.
+  tables, each fault file breaks them in exactly the one place it names;
+- corpus/idioms (MANIFEST.tsv): each file draws today's code for its generator
+  idiom, and the evidence counted for it is what the real files give.
 """
 
 from __future__ import annotations

@@ -45,8 +45,6 @@ _GENERATOR = re.compile(r"EZ-EDS Version ([0-9]+\.[0-9]+)")
 NO_GENERATOR = "no generator comment"
 #: Field positions shown per entry in the report (AssemExaN has hundreds).
 _SHOWN = 8
-#: Diagnostics about content beyond the 2003 text (the rest is where idioms show).
-NEWER_CONTENT_CODES = ("EDS006", "EDS219", "EDS220")
 
 
 @dataclass

@@ -242,7 +242,7 @@ LINK_ENTRIES: tuple[EntrySpec, ...] = (
 DLR_ENTRIES: tuple[EntrySpec, ...] = (
     _single(_DLR, "Ring_Supervisor_Capable", "Ring Supervisor Capable", "Keyword",
             "Whether the device can be a ring supervisor",
-            _src("", 8, "'No' in all 8 files (EZ-EDS 3.29 - 3.36); no source lists the allowed keywords")),
+            _src("", 8, "'No' in all 8 files (EZ-EDS 3.11 - 3.36); no source lists the allowed keywords")),
     # spelled so (sic) in the one file that writes it
     _single(_DLR, "Redunant_Gateway_Capable", "Redundant Gateway Capable", "Keyword",
             "Whether the device can be a redundant gateway",

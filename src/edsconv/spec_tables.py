@@ -566,6 +566,30 @@ def unscale(eng_value: float, multiplier: float = 1, divisor: float = 1, base: f
 
 
 @dataclass(frozen=True, slots=True)
+class Provenance:
+    """Where a fact beyond the 2003 text comes from (edsconv.cip_tables).
+
+    The 2003 tables cite their clause instead and leave ``provenance`` None.
+    """
+
+    #: eds-pie 1.2.0 ``references/*.json`` file and key that state the fact;
+    #: "" when eds-pie does not state it.
+    eds_pie: str = ""
+    #: Real files (shared/corpus/real) that write it this way; 0 when none does.
+    files: int = 0
+    #: How the real files write it: notations, values, generators.
+    practice: str = ""
+    #: Where eds-pie and the real files disagree: both readings, which the table
+    #: follows and why.
+    disagreement: str = ""
+
+    @property
+    def practice_only(self) -> bool:
+        """Known only from how real files write it: a check on it is at most a warning."""
+        return not self.eds_pie
+
+
+@dataclass(frozen=True, slots=True)
 class FieldSpec:
     #: 1-based field position; for a repeating tail, the first position.
     number: int
@@ -586,6 +610,8 @@ class FieldSpec:
     value_range: tuple[int, int] | None = None
     #: Key in BIT_TABLES when the field is a bit mask.
     bits: str = ""
+    #: Source of a field beyond the 2003 text (None: the 2003 clause).
+    provenance: Provenance | None = None
 
     @property
     def alternatives(self) -> tuple[str, ...]:
@@ -613,6 +639,8 @@ class EntrySpec:
     proxy_keywords: tuple[str, ...] = ()
     aliases: tuple[str, ...] = ()
     note: str = ""
+    #: Source of an entry beyond the 2003 text (None: the 2003 clause).
+    provenance: Provenance | None = None
     #: the repeating tail, computed once (field_at runs for every field read)
     repeating: tuple[FieldSpec, ...] = field(init=False, repr=False)
 
@@ -658,6 +686,10 @@ class SectionSpec:
     #: Vendor-specific sections come last (Table C.3).
     last: bool = False
     note: str = ""
+    #: CIP class ID of the object the section describes (None: not an object class).
+    class_id: int | None = None
+    #: Source of a section beyond the 2003 text (None: the 2003 clause).
+    provenance: Provenance | None = None
 
     @property
     def networks(self) -> frozenset[str]:
@@ -667,7 +699,10 @@ class SectionSpec:
         return self.network_presence.get(network, self.presence) if network else self.presence
 
     def entry(self, keyword: str) -> EntrySpec | None:
-        return entry_spec(self.name, keyword)
+        if SECTIONS.get(self.name) is self:
+            return entry_spec(self.name, keyword)
+        # sections of edsconv.cip_tables: looked up in their own entries
+        return find_entry(self.entries, keyword)
 
 
 def _fields(clause: str, table: str, *rows) -> tuple[FieldSpec, ...]:
@@ -1021,6 +1056,18 @@ def entry_spec(section: str, keyword: str) -> EntrySpec | None:
         return None
     spec = _ENTRY_INDEX.get((sec.name, prefix))
     return spec if spec is not None and spec.numbered else None
+
+
+def find_entry(entries: tuple[EntrySpec, ...], keyword: str) -> EntrySpec | None:
+    """The spec among ``entries`` that ``keyword`` names, by name or alias, or by
+    numbered family (``"TSpec3"`` -> TSpec), as :func:`entry_spec` resolves."""
+    for spec in entries:
+        if not spec.numbered and keyword in (spec.keyword, *spec.aliases):
+            return spec
+    prefix, number = split_numbered(keyword)
+    if number is None:
+        return None
+    return next((spec for spec in entries if spec.numbered and spec.keyword == prefix), None)
 
 
 def entries_named(keyword: str) -> tuple[EntrySpec, ...]:

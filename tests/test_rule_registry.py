@@ -4,13 +4,16 @@ the rules they report, and a check whose rules are all deselected does not run."
 from __future__ import annotations
 
 import importlib
+import json
 import pkgutil
 
 import pytest
+from click.testing import CliRunner
 
 import edsconv
-from edsconv import checks, lint
+from edsconv import checks, lint, rule_docs
 from edsconv.checks import Check, load_checks
+from edsconv.cli import cli
 from edsconv.diagnostics import EVERYTHING, Rule, Selection, load_rules
 
 from conftest import REPO, SHARED_REAL
@@ -112,3 +115,58 @@ def test_each_check_reports_only_the_rules_it_declares(path):
     for check_ in load_checks():
         declared = {r.code for r in check_.rules}
         assert {d.code for d in check_.run(context)} <= declared, check_.name
+
+
+# --- aliases: EDS407 names EDS313's fault, EDS403 names EDS331's ------------------------------------
+PROXY_ASSEM_MEMBER_MODULE = PROXY_CONNECT_NAMED_MODULE.replace(
+    "[Connection Manager]\nProxyConnect1", '[Assembly]\nProxyAssem1 = "Module data","",4,,,,32,Module;\n'
+    "[Connection Manager]\nConnection1")
+
+
+def _lint(tmp_path, text: str, *options: str):
+    (tmp_path / "adapter.eds").write_text(text)
+    result = CliRunner().invoke(cli, ["lint", "--format", "json", *options, str(tmp_path / "adapter.eds")])
+    (report,) = json.loads(result.output)["files"]
+    return [d["code"] for d in report["diagnostics"]]
+
+
+@pytest.mark.parametrize(("text", "alias", "kept"), [(PROXY_CONNECT_NAMED_MODULE, "EDS407", "EDS313"),
+                                                     (PROXY_ASSEM_MEMBER_MODULE, "EDS403", "EDS331")])
+def test_selecting_or_ignoring_an_alias_acts_on_its_rule(tmp_path, text, alias, kept):
+    assert kept in _lint(tmp_path, text)
+    assert _lint(tmp_path, text, "--select", alias) == [kept]
+    assert kept not in _lint(tmp_path, text, "--ignore", alias)
+    assert alias not in _lint(tmp_path, text)
+    # only the whole alias code stands for the rule: a prefix of it selects rules by their own codes
+    assert kept not in _lint(tmp_path, text, "--select", alias[:5])
+
+
+def test_the_registry_knows_aliases_only_as_aliases():
+    registry = load_rules()
+    assert {code: r.code for code, r in registry.aliases.items()} == {"EDS403": "EDS331", "EDS407": "EDS313"}
+    assert "EDS403" not in registry.rules and "EDS407" not in registry.rules
+    assert registry.resolve("EDS407") == "EDS313" and registry.resolve("EDS313") == "EDS313"
+
+
+def test_rules_lists_an_alias_with_its_rule_and_explains_it():
+    table = CliRunner().invoke(cli, ["rules"]).output.splitlines()
+    assert next(line for line in table if line.startswith("EDS313")).endswith("(alias: EDS407)")
+    assert next(line for line in table if line.startswith("EDS331")).endswith("(alias: EDS403)")
+    assert not any(line.startswith(("EDS403", "EDS407")) for line in table)
+    explained = CliRunner().invoke(cli, ["rules", "EDS407"]).output
+    assert explained.startswith("### EDS313\n") and "- Alias: [EDS407](#eds407-alias-of-eds313)" in explained
+    (record,) = json.loads(CliRunner().invoke(cli, ["rules", "--format", "json", "EDS331"]).output)
+    assert [a["code"] for a in record["aliases"]] == ["EDS403"]
+
+
+def test_docs_give_each_alias_a_heading_that_names_its_rule():
+    page = (REPO / "docs" / "rules.md").read_text(encoding="utf-8")
+    assert "\n### EDS403 (alias of EDS331)\n" in page and "\n### EDS407 (alias of EDS313)\n" in page
+    assert "\n### EDS403\n" not in page and "\n### EDS407\n" not in page
+
+
+def test_rule_text_for_one_code_and_markdown_for_all():
+    one = CliRunner().invoke(cli, ["rules", "EDS321"]).output
+    assert one.startswith("### EDS321\n") and "- Severity: info" in one and "Triggers:" in one
+    assert CliRunner().invoke(cli, ["rules", "--format", "markdown"]).output == rule_docs.rules_page()
+    assert CliRunner().invoke(cli, ["rules", "NOPE"]).exit_code == 2

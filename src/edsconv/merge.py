@@ -52,6 +52,7 @@ from pathlib import Path
 import click
 
 from edsconv import spec_tables as tables
+from edsconv.checks.entity_rules import MODULE_IN_MEMBER, PROXY_CONNECT_NAME_MODULE
 from edsconv.diagnostics import Diagnostic, Rule, Severity, has_errors, rule
 from edsconv.model import MODULE, MODULE_MEMBER_LIST
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, Value, ValueKind
@@ -80,15 +81,6 @@ NO_PROXIED_ENTRY = rule(
     """,
     bad='`ProxyParam1 = 0,,,0,2,2,"a","","",Module,1,0;` and the module has no `ProxiedParam1`.',
     good='the module has `ProxiedParam1 = ,,,,,,"a","","",0;`',
-)
-MODULE_IN_MEMBER = rule(
-    "EDS403", Severity.ERROR, "C.4.1.5.3.2", "Module stands in a Member Size or Member Reference field of a ProxyAssem",
-    explanation="""
-        `Module` stands in a Member Size or Member Reference field of a ProxyAssem;
-        C.4.1.5.3.2 forbids it there. Use `ModuleMemberList` in place of the pair.
-    """,
-    bad='`ProxyAssem1 = "a",,,,,,16,Module;`',
-    good='`ProxyAssem1 = "a",,,,,,,ModuleMemberList;`',
 )
 ORPHAN_SIZE_ADDER = rule(
     "EDS404", Severity.WARNING, "C.4.1.5.3.1", "A ProxyParamSizeAdderN has no ProxyParamN to add to",
@@ -122,15 +114,6 @@ BAD_MODULE_MEMBER_LIST = rule(
     """,
     bad='`ProxyAssem1 = "a",,,,,,16,ModuleMemberList;`',
     good='`ProxyAssem1 = "a",,,,,,,ModuleMemberList;`',
-)
-MODULE_CONNECTION_NAME = rule(
-    "EDS407", Severity.ERROR, "C.4.1.5.3.3", "The connection name string of a ProxyConnect is Module",
-    explanation="""
-        The connection name string (field 13) of a ProxyConnect is `Module`; the
-        adapter shall always give the name itself.
-    """,
-    bad='`ProxyConnect1 = 0x04010002,0x44244401,,,,,,,,,,,Module,"","20 04";`',
-    good='`ProxyConnect1 = 0x04010002,0x44244401,,,,,,,,,,,"Listen Only","","20 04";`',
 )
 
 
@@ -464,7 +447,7 @@ class _Merger:
 
     def _connection(self, proxy: Entry, proxied: Entry | None) -> list[Field] | None:
         if CONNECTION_NAME_POSITION < len(proxy.fields) and _is_word(proxy.fields[CONNECTION_NAME_POSITION], MODULE):
-            self.report(MODULE_CONNECTION_NAME, f"{proxy.keyword}: the connection name string shall be given by "
+            self.report(PROXY_CONNECT_NAME_MODULE, f"{proxy.keyword}: the connection name string shall be given by "
                         f"the adapter, not {MODULE}", self.adapter, proxy.fields[CONNECTION_NAME_POSITION])
             return None
         return self._plain(proxy, proxied, range(len(proxy.fields)))

@@ -202,8 +202,10 @@ SIZE_FORMAT_MISMATCH = rule(
 PROXY_CONNECT_NAME_MODULE = rule(
     "EDS313", Severity.ERROR, "C.4.1.5.3.3", "A ProxyConnect's connection name is 'Module'",
     explanation="""
-        A ProxyConnect shall always give its own connection name string, never `Module`
-        (C.4.1.5.3.3).
+        A ProxyConnect shall always give its own connection name string (field 13),
+        never `Module` (C.4.1.5.3.3): the adapter gives the name itself. `edsconv lint`
+        reports it in the adapter's file; `edsconv merge` reports it too and leaves the
+        entry out of the combination.
     """,
     bad=block("""
         ProxyConnect2 = 0x04010002, 0x44640405, ..., Module, "", "20 04 24 64";
@@ -212,6 +214,10 @@ PROXY_CONNECT_NAME_MODULE = rule(
         ProxyConnect2 = 0x04010002, 0x44640405, ..., "LO", "", "20 04 24 64";
     """),
     labels=TRIGGERS,
+    aliases={"EDS407": """
+        The code `edsconv merge` gave this fault before it reported the code `edsconv lint`
+        gives: a ProxyConnect named `Module` is a fault of the adapter's file alone.
+    """},
 )
 PARAM_RESERVED_BITS = rule(
     "EDS314", Severity.WARNING, "C.4.1.4.6", "A parameter descriptor sets reserved bits (Table C.15)",
@@ -487,11 +493,13 @@ SLOT_MASK_WITHOUT_SIZE = rule(
     labels=TRIGGERS,
 )
 MODULE_IN_MEMBER = rule(
-    "EDS331", Severity.ERROR, "C.4.1.5.3.2", "A ProxyAssem member reference is 'Module'",
+    "EDS331", Severity.ERROR, "C.4.1.5.3.2", "A ProxyAssem Member Reference or Member Size is 'Module'",
     explanation="""
-        `Module` shall not be used for a Member Reference of a ProxyAssem;
-        `ModuleMemberList` replaces a whole member pair (C.4.1.5.3.2). `Module` in a Member
-        Size field is already EDS101 (not an integer).
+        `Module` shall not be used for a Member Size or Member Reference of a ProxyAssem;
+        `ModuleMemberList` replaces a whole member pair (C.4.1.5.3.2). `edsconv lint`
+        reports a Member Reference: `Module` in a Member Size field is already EDS101
+        there (not an integer). `edsconv merge` reports both and leaves the entry out
+        of the combination.
     """,
     bad=block("""
         ProxyAssem1 = "Module data","",4,,,,32,Module;
@@ -500,6 +508,10 @@ MODULE_IN_MEMBER = rule(
         ProxyAssem1 = "Module data","",4,,,,ModuleMemberList;
     """),
     labels=TRIGGERS,
+    aliases={"EDS403": """
+        The code `edsconv merge` gave this fault before it reported the code `edsconv lint`
+        gives: `Module` in a member of a ProxyAssem is a fault of the adapter's file alone.
+    """},
 )
 DUPLICATE_PORT_NUMBER = rule(
     "EDS332", Severity.ERROR, "C.4.1.4.10", "Two ports have the same port number",

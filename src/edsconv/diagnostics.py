@@ -49,8 +49,8 @@ class Alias:
 class Rule:
     """A rule and its documentation: docs/rules.md and ``edsconv rules`` are generated from these fields.
 
-    ``explanation``, ``bad`` and ``good`` are Markdown; an example that is a
-    single line stands inline after its label, a fenced block on its own.
+    ``explanation``, ``bad`` and ``good`` are Markdown: an example stands inline
+    after its label unless it starts with a fenced block (:func:`block`).
     """
 
     code: str
@@ -109,7 +109,7 @@ def _text(markdown: str) -> str:
 
 
 #: Every module that defines rules: :func:`load_rules` collects their module-level :class:`Rule` objects.
-RULE_MODULES = ("edsconv.lint", "edsconv.eds.reader", "edsconv.model.values", "edsconv.model.build",
+RULE_MODULES = ("edsconv.lint", "edsconv.eds.reader_rules", "edsconv.model.values", "edsconv.model.build",
                 "edsconv.checks.structure_rules", "edsconv.checks.entity_rules", "edsconv.merge",
                 "edsconv.xml.validate", "edsconv.xml.convert", "edsconv.xml.device")
 

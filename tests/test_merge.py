@@ -171,7 +171,8 @@ def test_proxy_entry_without_module_needs_no_proxied_entry():
 def test_module_in_a_member_field_is_an_error(members):
     result = _merge(f'[Assembly]\nProxyAssem1 = "a",,,,,,{members};\n',
                     '[Assembly]\nProxiedAssem1 = "a",,,,,,16,;\n')
-    assert codes(result) == ["EDS403"]
+    # EDS403 was merge's own code for it; EDS331, the code lint gives, replaces it (EDS403 is an alias now)
+    assert codes(result) == ["EDS331"]
 
 
 @pytest.mark.parametrize("members", ["16,ModuleMemberList", "ModuleMemberList,Param1"])
@@ -179,6 +180,13 @@ def test_module_member_list_must_replace_a_whole_pair(members):
     result = _merge(f'[Assembly]\nProxyAssem1 = "a",,,,,,{members};\n',
                     '[Assembly]\nProxiedAssem1 = "a",,,,,,16,;\n')
     assert codes(result) == ["EDS406"]
+
+
+def test_module_member_list_in_place_of_the_pair_is_no_eds406():
+    # docs/rules.md's example: "16,ModuleMemberList" is EDS406, ",ModuleMemberList" is the whole pair
+    module = '[Assembly]\nProxiedAssem1 = "a",,,,,,16,;\n'
+    assert codes(_merge('[Assembly]\nProxyAssem1 = "a",,,,,,16,ModuleMemberList;\n', module)) == ["EDS406"]
+    assert codes(_merge('[Assembly]\nProxyAssem1 = "a",,,,,,,ModuleMemberList;\n', module)) == []
 
 
 def test_module_member_list_alone_and_between_members():
@@ -194,6 +202,21 @@ def test_module_member_list_alone_and_between_members():
 def test_size_adder_without_proxy_param_is_a_warning():
     result = _merge('[Params]\nProxyParamSizeAdder3 = 1,1,1;\n', "")
     assert codes(result) == ["EDS404"] and not result.has_errors
+
+
+def test_size_adder_with_its_proxy_param_is_no_eds404():
+    result = _merge('[Params]\nProxyParam3 = 0,,,0,0xC6,1,"a","","",0,100,0;\nProxyParamSizeAdder3 = 1,1,1;\n', "")
+    assert codes(result) == []
+    (entry,) = result.merges[0].sections[0].entries
+    assert raws(entry)[9:12] == ["1", "101", "1"]
+
+
+def test_eds405_only_when_the_sum_leaves_the_type():
+    # docs/rules.md's example: a module maximum of 250 in a USINT takes 4 more, not 10
+    adapter = '[Params]\nProxyParam1 = 0,,,0,0xC6,1,"a","","",0,Module,0;\nProxyParamSizeAdder1 = 0,{add},0;\n'
+    module = '[Params]\nProxiedParam1 = ,,,,,,"a","","",,250,;\n'
+    assert codes(_merge(adapter.format(add=10), module)) == ["EDS405"]
+    assert codes(_merge(adapter.format(add=4), module)) == []
 
 
 def test_size_adder_on_an_empty_value_or_out_of_range():
@@ -220,7 +243,8 @@ def test_size_adder_keeps_hex_and_reals():
 def test_module_connection_name_is_an_error():
     result = _merge('[Connection Manager]\nProxyConnect1 = 0x04010002,0x44244401,,,,,,,,,,,Module,"",'
                     '"20 04";\n', '[Connection Manager]\nProxiedConnect1 = ,,,,,,,,,,,,"x","","";\n')
-    assert codes(result) == ["EDS407"]
+    # EDS407 was merge's own code for it; EDS313, the code lint gives, replaces it (EDS407 is an alias now)
+    assert codes(result) == ["EDS313"]
 
 
 # --- command line ------------------------------------------------------------------

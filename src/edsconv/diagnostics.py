@@ -1,15 +1,21 @@
 """Diagnostics and the rule registry.
 
-Every problem edsconv reports is a :class:`Diagnostic` carrying a stable code
-from :data:`RULES`. Rules are registered once, with their severity, the spec
-clause they enforce and a one-line explanation, so that ``edsconv rules``,
-docs/rules.md and every output format draw on the same table (the sqlfluff /
-ruff model).
+Every problem edsconv reports is a :class:`Diagnostic` carrying the stable code
+of a :class:`Rule`. A rule is defined once, in the module that reports it, with
+its severity, the spec clause it enforces, a one-line summary and its
+documentation (explanation, a bad and a good example), so that ``edsconv rules``,
+docs/rules.md and every output format draw on the same record (the sqlfluff /
+ruff model). :func:`load_rules` collects them from :data:`RULE_MODULES`.
 """
 
 from __future__ import annotations
 
 import enum
+import functools
+import importlib
+import re
+import textwrap
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 
@@ -24,26 +30,158 @@ class Severity(enum.IntEnum):
         return self.name.lower()
 
 
+#: How a rule's documentation introduces its two examples: one that breaks the rule, one that does not.
+BAD_GOOD = ("Bad", "Good")
+#: For rules whose first example is not a mistake as such (information, or a condition a file may meet).
+TRIGGERS = ("Triggers", "Does not")
+
+
+@dataclass(frozen=True, slots=True)
+class Alias:
+    """A second code for the fault of a rule: ``--select``/``--ignore`` accept it, no diagnostic carries it."""
+
+    code: str
+    #: Where the code came from, for docs/rules.md.
+    note: str
+
+
 @dataclass(frozen=True, slots=True)
 class Rule:
+    """A rule and its documentation: docs/rules.md and ``edsconv rules`` are generated from these fields.
+
+    ``explanation``, ``bad`` and ``good`` are Markdown: an example stands inline
+    after its label unless it starts with a fenced block (:func:`block`).
+    """
+
     code: str
     severity: Severity
     clause: str
     summary: str
     #: True when a major engineering tool refuses to import a file with this problem.
     import_blocking: bool = False
+    #: More precise pointers than the clause (tables, further clauses), shown after it in the docs.
+    clause_note: str = ""
+    explanation: str = ""
+    bad: str = ""
+    good: str = ""
+    labels: tuple[str, str] = BAD_GOOD
+    aliases: tuple[Alias, ...] = ()
+
+    def as_dict(self) -> dict:
+        """The full record, as ``edsconv rules --format json`` prints it."""
+        return {
+            "code": self.code,
+            "severity": str(self.severity),
+            "clause": self.clause,
+            "import_blocking": self.import_blocking,
+            "summary": self.summary,
+            "clause_note": self.clause_note,
+            "explanation": self.explanation,
+            "examples": {"labels": list(self.labels), "bad": self.bad, "good": self.good},
+            "aliases": [{"code": a.code, "note": a.note} for a in self.aliases],
+        }
 
 
-RULES: dict[str, Rule] = {}
+_CODE = re.compile(r"(EDS|XML)[0-9]{3}")
 
 
-def rule(code: str, severity: Severity, clause: str, summary: str, *, import_blocking: bool = False) -> Rule:
-    """Register a rule; codes are unique and never reused."""
-    if code in RULES:
-        raise ValueError(f"duplicate rule code {code}")
-    registered = Rule(code, severity, clause, summary, import_blocking)
-    RULES[code] = registered
-    return registered
+def rule(code: str, severity: Severity, clause: str, summary: str, *, explanation: str, bad: str, good: str,
+         import_blocking: bool = False, clause_note: str = "", labels: tuple[str, str] = BAD_GOOD,
+         aliases: dict[str, str] | None = None) -> Rule:
+    """A rule with its documentation; the texts are dedented, so they may be indented like the code.
+
+    Defining a rule does not register it: :func:`load_rules` collects the rules of :data:`RULE_MODULES`.
+    """
+    for named in (code, *(aliases or ())):
+        if not _CODE.fullmatch(named):
+            raise ValueError(f"rule code {named!r} is not EDSnnn or XMLnnn")
+    return Rule(code, severity, clause, summary, import_blocking, clause_note, _text(explanation), _text(bad),
+                _text(good), labels, tuple(Alias(alias, _text(note)) for alias, note in (aliases or {}).items()))
+
+
+def block(code: str, language: str = "") -> str:
+    """An example as a fenced Markdown code block (the code is dedented: indent it like the call)."""
+    return f"```{language}\n{textwrap.dedent(code).strip(chr(10))}\n```"
+
+
+def _text(markdown: str) -> str:
+    return textwrap.dedent(markdown).strip()
+
+
+#: Every module that defines rules: :func:`load_rules` collects their module-level :class:`Rule` objects.
+RULE_MODULES = ("edsconv.lint", "edsconv.eds.reader_rules", "edsconv.model.values", "edsconv.model.build",
+                "edsconv.checks.structure_rules", "edsconv.checks.entity_rules", "edsconv.merge",
+                "edsconv.xml.validate", "edsconv.xml.convert", "edsconv.xml.device")
+
+
+@dataclass(frozen=True, slots=True)
+class RuleRegistry:
+    """Every rule by code (sorted), and every alias code with the rule it names."""
+
+    rules: dict[str, Rule]
+    aliases: dict[str, Rule]
+
+    def resolve(self, code: str) -> str:
+        """The code a diagnostic carries for ``code``: itself, or the rule an alias names."""
+        return self.aliases[code].code if code in self.aliases else code
+
+    def knows_prefix(self, prefix: str) -> bool:
+        return any(code.startswith(prefix) for code in (*self.rules, *self.aliases))
+
+
+@functools.cache
+def load_rules() -> RuleRegistry:
+    """Import each module of :data:`RULE_MODULES` and collect its rules; codes and aliases are unique."""
+    rules: dict[str, Rule] = {}
+    for name in RULE_MODULES:
+        for value in vars(importlib.import_module(name)).values():
+            if isinstance(value, Rule) and rules.setdefault(value.code, value) is not value:
+                raise ValueError(f"duplicate rule code {value.code}")
+    aliases: dict[str, Rule] = {}
+    for registered in rules.values():
+        for alias in registered.aliases:
+            if alias.code in rules or aliases.setdefault(alias.code, registered) is not registered:
+                raise ValueError(f"alias {alias.code} is already a rule or an alias")
+    return RuleRegistry(dict(sorted(rules.items())), dict(sorted(aliases.items())))
+
+
+def all_rules() -> list[Rule]:
+    """Every rule, sorted by code."""
+    return list(load_rules().rules.values())
+
+
+@dataclass(frozen=True, slots=True)
+class Selection:
+    """``--select`` and ``--ignore``: codes or code prefixes, by ruff's rule.
+
+    The longest matching prefix decides, ``ignore`` on a tie; no ``select``
+    selects every code. An alias code stands for the code of its rule.
+    """
+
+    select: tuple[str, ...] = ()
+    ignore: tuple[str, ...] = ()
+
+    @classmethod
+    def of(cls, select: Iterable[str] = (), ignore: Iterable[str] = ()) -> Selection:
+        registry = load_rules()
+        return cls(tuple(map(registry.resolve, select)), tuple(map(registry.resolve, ignore)))
+
+    @property
+    def everything(self) -> bool:
+        return not self.select and not self.ignore
+
+    def __contains__(self, code: str) -> bool:
+        chosen = max((len(p) for p in self.select if code.startswith(p)), default=None if self.select else 0)
+        dropped = max((len(p) for p in self.ignore if code.startswith(p)), default=None)
+        if chosen is None:
+            return False
+        return dropped is None or chosen > dropped
+
+    def any_of(self, rules: Iterable[Rule]) -> bool:
+        return any(r.code in self for r in rules)
+
+
+EVERYTHING = Selection()
 
 
 @dataclass(slots=True)

@@ -20,13 +20,36 @@ from pathlib import Path
 
 import click
 
-from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, has_errors, load_rules, rule
 from edsconv.eds.reader import load
-from edsconv.report import FORMATTERS, FileReport, all_rules
+from edsconv.report import FORMATTERS, FileReport
 from edsconv.eds.syntax import EdsFile
 
-INTERNAL_ERROR = rule("EDS000", Severity.ERROR, "edsconv",
-                      "edsconv could not check this file: it is unreadable, or edsconv failed on it (please report that)")
+INTERNAL_ERROR = rule(
+    "EDS000", Severity.ERROR, "edsconv",
+    "edsconv could not check this file: it is unreadable, or edsconv failed on it (please report that)",
+    explanation="""
+        edsconv could not check this file: the file could not be read (permissions, a
+        directory named like a file, a file removed during the run) or edsconv failed on
+        it. The message says which. An internal failure is a bug in edsconv: please
+        report it with the file. The rest of the run goes on; the other files are
+        reported as usual.
+    """,
+    bad="""
+        a file the linting user may not read.
+
+        ```sh
+        chmod 000 device.eds && edsconv lint device.eds
+        ```
+    """,
+    good="""
+        a readable file.
+
+        ```sh
+        chmod 644 device.eds && edsconv lint device.eds
+        ```
+    """,
+)
 
 #: Suffixes of the files a directory is searched for (files named explicitly are linted whatever their suffix).
 EDS_SUFFIXES = (".eds", ".EDS")
@@ -37,23 +60,23 @@ PROGRESS_THRESHOLD = 20
 
 
 # --- per file -------------------------------------------------------------------------
-def analyse(eds: EdsFile) -> list[Diagnostic]:
-    """Every diagnostic of a file that has been read: syntax, values, checks."""
+def analyse(eds: EdsFile, selection: Selection = EVERYTHING) -> list[Diagnostic]:
+    """The diagnostics ``selection`` keeps of a file that has been read: syntax, values, checks."""
     from edsconv import analyse as analyse_device
 
-    return analyse_device(eds)[1]
+    return analyse_device(eds, selection)[1]
 
 
-def lint_file(path: str) -> FileReport:
+def lint_file(path: str, selection: Selection = EVERYTHING) -> FileReport:
     """Read and check one file; never raises for a problem of this file."""
     try:
-        diagnostics = analyse(load(path))
+        diagnostics = analyse(load(path), selection)
     except OSError as error:
-        return _failed(path, f"cannot read the file: {error.strerror or error}")
+        return _failed(path, f"cannot read the file: {error.strerror or error}", selection)
     except Exception as error:  # noqa: BLE001 - one file must never stop the run
         where = traceback.extract_tb(error.__traceback__)[-1]
         return _failed(path, f"internal error {type(error).__name__}: {error} "
-                       f"(at {Path(where.filename).name}:{where.lineno}); please report it")
+                       f"(at {Path(where.filename).name}:{where.lineno}); please report it", selection)
     for d in diagnostics:
         if d.path is None:
             d.path = path
@@ -61,8 +84,9 @@ def lint_file(path: str) -> FileReport:
     return FileReport(path, diagnostics)
 
 
-def _failed(path: str, message: str) -> FileReport:
-    return FileReport(path, [Diagnostic.of(INTERNAL_ERROR, message, path=path)], error=message)
+def _failed(path: str, message: str, selection: Selection = EVERYTHING) -> FileReport:
+    diagnostics = [Diagnostic.of(INTERNAL_ERROR, message, path=path)] if INTERNAL_ERROR.code in selection else []
+    return FileReport(path, diagnostics, error=message)
 
 
 # --- many files -------------------------------------------------------------------------
@@ -83,20 +107,19 @@ def discover(paths: Iterable[str | Path]) -> list[str]:
 
 def lint_paths(paths: Iterable[str | Path], select: Sequence[str] = (), ignore: Sequence[str] = (),
                jobs: int | None = None) -> list[FileReport]:
-    """Lint every file :func:`discover` finds; reports in its order, filtered by ``select``/``ignore``."""
+    """Lint every file :func:`discover` finds; reports in its order, filtered by ``select``/``ignore``.
+
+    A check none of whose rules is selected does not run.
+    """
     files = discover(paths)
+    selection = Selection.of(select, ignore)
     jobs = jobs or os.cpu_count() or 1
     if jobs > 1 and len(files) > PARALLEL_THRESHOLD:
-        reports = _lint_parallel(files, jobs)
-    else:
-        reports = [lint_file(f) for f in _progress(files, len(files))]
-    if select or ignore:
-        for report in reports:
-            report.diagnostics = [d for d in report.diagnostics if selected(d.code, select, ignore)]
-    return reports
+        return _lint_parallel(files, jobs, selection)
+    return [lint_file(f, selection) for f in _progress(files, len(files))]
 
 
-def _lint_parallel(files: list[str], jobs: int) -> list[FileReport]:
+def _lint_parallel(files: list[str], jobs: int, selection: Selection) -> list[FileReport]:
     from concurrent.futures import ProcessPoolExecutor, as_completed
     from concurrent.futures.process import BrokenProcessPool
 
@@ -105,13 +128,13 @@ def _lint_parallel(files: list[str], jobs: int) -> list[FileReport]:
     order = sorted(range(len(files)), key=lambda i: -_size(files[i]))
     try:
         with ProcessPoolExecutor(max_workers=min(jobs, len(files))) as pool:
-            futures = {pool.submit(lint_file, files[i]): i for i in order}
+            futures = {pool.submit(lint_file, files[i], selection): i for i in order}
             for future in _progress(as_completed(futures), len(files)):
                 reports[futures[future]] = future.result()
     except BrokenProcessPool as error:
         # A worker died (killed, out of memory): every file not answered for is reported, the rest kept.
         message = f"the worker process checking this file died ({error}); please report it"
-        reports = [r or _failed(f, message) for f, r in zip(files, reports)]
+        reports = [r or _failed(f, message, selection) for f, r in zip(files, reports)]
     return reports
 
 
@@ -137,15 +160,6 @@ def _progress(items: Iterable, total: int) -> Iterable:
             progress.advance(task)
 
 
-def selected(code: str, select: Sequence[str], ignore: Sequence[str]) -> bool:
-    """Ruff's rule: the longest matching prefix decides, ``ignore`` on a tie; no ``select`` selects all."""
-    chosen = max((len(p) for p in select if code.startswith(p)), default=None if select else 0)
-    dropped = max((len(p) for p in ignore if code.startswith(p)), default=None)
-    if chosen is None:
-        return False
-    return dropped is None or chosen > dropped
-
-
 def promote_warnings(reports: Iterable[FileReport]) -> None:
     """``--warnings-as-errors``: every warning becomes an error."""
     for report in reports:
@@ -156,11 +170,10 @@ def promote_warnings(reports: Iterable[FileReport]) -> None:
 
 # --- commands -------------------------------------------------------------------------------
 def _codes(ctx: click.Context, param: click.Parameter, value: tuple[str, ...]) -> tuple[str, ...]:
-    """Comma-separated codes or prefixes, each matching at least one rule."""
+    """Comma-separated codes or prefixes, each matching at least one rule (or alias)."""
     codes = tuple(c.strip().upper() for v in value for c in v.split(",") if c.strip())
     if codes:
-        known = [r.code for r in all_rules()]
-        unknown = [c for c in codes if not any(k.startswith(c) for k in known)]
+        unknown = [c for c in codes if not load_rules().knows_prefix(c)]
         if unknown:
             raise click.BadParameter(f"no rule code starts with {', '.join(unknown)} (see 'edsconv rules')")
     return codes
@@ -208,20 +221,13 @@ def _print_summary(reports: list[FileReport]) -> None:
 
 
 @click.command("rules")
-@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def rules_command(output_format: str) -> int:
-    """List every rule: code, severity, clause, import-blocking mark (!) and summary."""
-    import json
+@click.argument("codes", nargs=-1, callback=_codes)
+@click.option("--format", "output_format", type=click.Choice(["text", "json", "markdown"]), default="text",
+              show_default=True, help="text: a table, or each rule's explanation when CODES are given; json: the "
+              "full records; markdown: docs/rules.md (or the sections of CODES).")
+def rules_command(codes: tuple[str, ...], output_format: str) -> int:
+    """List every rule (code, severity, clause, import-blocking mark (!) and summary), or explain CODES."""
+    from edsconv.rule_docs import format_rules
 
-    rules = all_rules()
-    if output_format == "json":
-        click.echo(json.dumps([{"code": r.code, "severity": str(r.severity), "clause": r.clause,
-                                "import_blocking": r.import_blocking, "summary": r.summary} for r in rules],
-                              indent=2))
-        return 0
-    clause_width = max(len(r.clause) for r in rules)
-    for r in rules:
-        mark = "!" if r.import_blocking else " "
-        click.echo(f"{r.code}  {str(r.severity):7}  {r.clause:{clause_width}}  {mark} {r.summary}")
+    click.echo(format_rules(output_format, codes), nl=False)
     return 0
-

@@ -52,28 +52,69 @@ from pathlib import Path
 import click
 
 from edsconv import spec_tables as tables
+from edsconv.checks.entity_rules import MODULE_IN_MEMBER, PROXY_CONNECT_NAME_MODULE
 from edsconv.diagnostics import Diagnostic, Rule, Severity, has_errors, rule
 from edsconv.model import MODULE, MODULE_MEMBER_LIST
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, Value, ValueKind
 
 _M = "C.4.1.5.3"
-NO_MATCHING_RACK = rule("EDS401", Severity.ERROR, "C.4.1.5.3.1",
-                        "An adapter and a module EDS share no matching Rack entry, so they cannot be merged")
-NO_PROXIED_ENTRY = rule("EDS402", Severity.ERROR, _M,
-                        "A Proxy entry defers a field to the module (Module, ModuleMemberList) but the module has "
-                        "no Proxied entry of that number, or no field at that position")
-MODULE_IN_MEMBER = rule("EDS403", Severity.ERROR, "C.4.1.5.3.2",
-                        "Module stands in a Member Size or Member Reference field of a ProxyAssem")
-ORPHAN_SIZE_ADDER = rule("EDS404", Severity.WARNING, "C.4.1.5.3.1",
-                         "A ProxyParamSizeAdderN has no ProxyParamN to add to")
-SIZE_ADDER_NOT_APPLIED = rule("EDS405", Severity.WARNING, "C.4.1.5.3.1",
-                              "A ProxyParamSizeAdder value cannot be added: no value to add to, a value that is "
-                              "not a number of the parameter's data type, or a sum outside its range")
-BAD_MODULE_MEMBER_LIST = rule("EDS406", Severity.ERROR, "C.4.1.5.3.2",
-                              "ModuleMemberList does not stand in place of a whole Member Size / Member Reference "
-                              "pair")
-MODULE_CONNECTION_NAME = rule("EDS407", Severity.ERROR, "C.4.1.5.3.3",
-                              "The connection name string of a ProxyConnect is Module")
+NO_MATCHING_RACK = rule(
+    "EDS401", Severity.ERROR, "C.4.1.5.3.1",
+    "An adapter and a module EDS share no matching Rack entry, so they cannot be merged",
+    explanation="""
+        An adapter and a module EDS share no matching Rack entry, so they cannot be
+        merged: no RackN of the module has the vendor, product type, product code and
+        major / minor revision of a RackN of the adapter (or the adapter has no Rack
+        entry at all).
+    """,
+    bad="adapter `Rack1 = 65535, 101, 1, 1, 1,,,, 0;`, module `Rack1 = 65535, 101, 9, 1, 1,,,, 1, 2;`",
+    good="module `Rack1 = 65535, 101, 1, 1, 1,,,, 1, 2;`",
+)
+NO_PROXIED_ENTRY = rule(
+    "EDS402", Severity.ERROR, _M,
+    "A Proxy entry defers a field to the module (Module, ModuleMemberList) but the module has no Proxied entry of "
+    "that number, or no field at that position",
+    explanation="""
+        A Proxy entry defers a field to the module (`Module`, or `ModuleMemberList` in
+        a ProxyAssem) but the module has no Proxied entry of that number, or no field at
+        that position. The combined entry is left out.
+    """,
+    bad='`ProxyParam1 = 0,,,0,2,2,"a","","",Module,1,0;` and the module has no `ProxiedParam1`.',
+    good='the module has `ProxiedParam1 = ,,,,,,"a","","",0;`',
+)
+ORPHAN_SIZE_ADDER = rule(
+    "EDS404", Severity.WARNING, "C.4.1.5.3.1", "A ProxyParamSizeAdderN has no ProxyParamN to add to",
+    explanation="A ProxyParamSizeAdderN has no ProxyParamN to add to; it is not used.",
+    bad="`ProxyParamSizeAdder3 = 4,4,4;` without `ProxyParam3`.",
+    good="`ProxyParam3` exists.",
+)
+SIZE_ADDER_NOT_APPLIED = rule(
+    "EDS405", Severity.WARNING, "C.4.1.5.3.1",
+    "A ProxyParamSizeAdder value cannot be added: no value to add to, a value that is not a number of the parameter's"
+    " data type, or a sum outside its range",
+    explanation="""
+        A ProxyParamSizeAdder value cannot be added: the combined Minimum, Maximum or
+        Default it adds to is empty, a value is not a number of the parameter's data
+        type, or the sum lies outside that type's range. The value is left as it was.
+    """,
+    bad="""
+        `ProxyParam1 = 0,,,0,0xC6,1,"a","","",0,Module,0;`, module maximum `250`, `ProxyParamSizeAdder1 = 0,10,0;` (260
+        is beyond USINT)
+    """,
+    good="`ProxyParamSizeAdder1 = 0,4,0;`",
+)
+BAD_MODULE_MEMBER_LIST = rule(
+    "EDS406", Severity.ERROR, "C.4.1.5.3.2",
+    "ModuleMemberList does not stand in place of a whole Member Size / Member Reference pair",
+    explanation="""
+        `ModuleMemberList` does not stand in place of a whole Member Size / Member
+        Reference pair: the other field of its pair is not empty, or it stands in
+        fields 1-6 of the ProxyAssem (Table C.20; Figure C.15 prints it at field 6,
+        before the two reserved fields were counted).
+    """,
+    bad='`ProxyAssem1 = "a",,,,,,16,ModuleMemberList;`',
+    good='`ProxyAssem1 = "a",,,,,,,ModuleMemberList;`',
+)
 
 
 #: (section, Proxy prefix, Proxied prefix, output prefix)
@@ -406,7 +447,7 @@ class _Merger:
 
     def _connection(self, proxy: Entry, proxied: Entry | None) -> list[Field] | None:
         if CONNECTION_NAME_POSITION < len(proxy.fields) and _is_word(proxy.fields[CONNECTION_NAME_POSITION], MODULE):
-            self.report(MODULE_CONNECTION_NAME, f"{proxy.keyword}: the connection name string shall be given by "
+            self.report(PROXY_CONNECT_NAME_MODULE, f"{proxy.keyword}: the connection name string shall be given by "
                         f"the adapter, not {MODULE}", self.adapter, proxy.fields[CONNECTION_NAME_POSITION])
             return None
         return self._plain(proxy, proxied, range(len(proxy.fields)))

@@ -18,11 +18,7 @@ from pathlib import Path, PurePath
 from typing import Protocol
 from urllib.parse import quote
 
-from edsconv.diagnostics import RULES, Diagnostic, Rule, Severity
-
-#: Every module that registers rules: importing them fills :data:`~edsconv.diagnostics.RULES`.
-RULE_MODULES = ("edsconv.eds.reader", "edsconv.model.values", "edsconv.model.build", "edsconv.checks", "edsconv.xml.validate",
-                "edsconv.lint", "edsconv.merge", "edsconv.xml.convert", "edsconv.xml.device")
+from edsconv.diagnostics import Diagnostic, Rule, Severity, all_rules
 
 SARIF_VERSION = "2.1.0"
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -47,15 +43,6 @@ class FileReport:
 
     def as_dict(self) -> dict:
         return {"path": self.path, "diagnostics": [d.as_dict() for d in self.diagnostics], "error": self.error}
-
-
-def all_rules() -> list[Rule]:
-    """Every registered rule, sorted by code (imports each module of :data:`RULE_MODULES`)."""
-    import importlib
-
-    for module in RULE_MODULES:
-        importlib.import_module(module)
-    return [RULES[code] for code in sorted(RULES)]
 
 
 def summarise(reports: Sequence[Report]) -> dict:

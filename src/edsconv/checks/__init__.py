@@ -1,19 +1,22 @@
 """The checks: every rule the spec makes checkable, run over the models of one file.
 
-A check is a function taking a :class:`Context` and yielding diagnostics; it is
-registered with :func:`check`, its rules with :func:`edsconv.diagnostics.rule`
-in the same module (so ``edsconv rules`` and docs/rules.md list them). The
-check modules are imported at the end of this file.
+A check is a function taking a :class:`Context` and yielding diagnostics,
+declared with :func:`check` and the rules it can report (its module's rules are
+documented in a sibling ``*_rules`` module). :func:`load_checks` collects the
+checks of :data:`CHECK_MODULES`; :func:`run_checks` runs those whose rules the
+``--select``/``--ignore`` selection keeps, as sqlfluff skips unselected rules.
 """
 
 from __future__ import annotations
 
+import functools
+import importlib
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
-from edsconv.diagnostics import Diagnostic, Rule
-from edsconv.model import Device
+from edsconv.diagnostics import EVERYTHING, Diagnostic, Rule, Selection
 from edsconv.eds.syntax import EdsFile
+from edsconv.model import Device
 
 
 @dataclass(slots=True)
@@ -28,21 +31,50 @@ class Context:
         return Diagnostic.of(rule_, message, line, column, self.eds.path)
 
 
-Check = Callable[[Context], Iterable[Diagnostic]]
-CHECKS: list[Check] = []
+CheckFunction = Callable[[Context], Iterable[Diagnostic]]
 
 
-def check(function: Check) -> Check:
-    """Register a check function."""
-    CHECKS.append(function)
-    return function
+@dataclass(frozen=True, slots=True)
+class Check:
+    """A check function and every rule it can report."""
+
+    run: CheckFunction
+    rules: tuple[Rule, ...]
+
+    @property
+    def name(self) -> str:
+        return self.run.__name__
 
 
-def run_checks(eds: EdsFile, device: Device) -> Iterator[Diagnostic]:
+def check(*rules: Rule) -> Callable[[CheckFunction], Check]:
+    """Declare a check function and the rules it can report (its diagnostics carry no other code)."""
+    if not rules:
+        raise ValueError("a check reports at least one rule")
+
+    def declare(function: CheckFunction) -> Check:
+        return Check(function, rules)
+
+    return declare
+
+
+#: Every module that defines checks: :func:`load_checks` collects their module-level :class:`Check` objects.
+CHECK_MODULES = ("edsconv.checks.entities", "edsconv.checks.structure")
+
+
+@functools.cache
+def load_checks() -> tuple[Check, ...]:
+    """The checks of :data:`CHECK_MODULES`, in the order the modules define them."""
+    found: dict[int, Check] = {}
+    for name in CHECK_MODULES:
+        for value in vars(importlib.import_module(name)).values():
+            if isinstance(value, Check):
+                found.setdefault(id(value), value)
+    return tuple(found.values())
+
+
+def run_checks(eds: EdsFile, device: Device, selection: Selection = EVERYTHING) -> Iterator[Diagnostic]:
+    """The diagnostics of every check whose rules ``selection`` keeps any of (the others do not run)."""
     context = Context(eds, device)
-    for function in CHECKS:
-        yield from function(context)
-
-
-# Registration happens on import; these modules use `check` and `Context` above.
-from edsconv.checks import entities, structure  # noqa: E402,F401
+    for check_ in load_checks():
+        if selection.any_of(check_.rules):
+            yield from check_.run(context)

@@ -13,7 +13,46 @@ from collections.abc import Iterator
 
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
-from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.checks.entity_rules import (
+    ASSEMBLY_CYCLE,
+    ASSEMBLY_NOT_WHOLE_BYTES,
+    ASSEMBLY_RESERVED_BITS,
+    ASSEMBLY_SIZE_MISMATCH,
+    BIT_STRING_MIN_MAX,
+    DATA_SIZE_MISMATCH,
+    DUPLICATE_CONNECTION_NAME,
+    DUPLICATE_PORT_NUMBER,
+    EMPTY_MEMBER,
+    ENUM_WITHOUT_DESCRIPTOR_BIT,
+    GROUP_MEMBER_COUNT,
+    LEGAL_SLOT_OUT_OF_RANGE,
+    MODULE_IN_MEMBER,
+    NESTED_ASSEMBLY,
+    NO_CLASS_OR_TRIGGER,
+    PACKED_EPATH_MEMBER,
+    PARAMETERS_RESERVED_BITS,
+    PARAM_RESERVED_BITS,
+    PROXY_CONNECT_NAME_MODULE,
+    QUERY_FIELD_VALUE,
+    RESERVED_REAL_TIME_FORMAT,
+    SAFETY_REAL_TIME_FORMAT,
+    SCALING_ON_NON_NUMERIC,
+    SCALING_ZERO,
+    SIZE_FORMAT_MISMATCH,
+    SIZE_WITHOUT_FORMAT,
+    SLOT_MASK_PAIR,
+    SLOT_MASK_WITHOUT_SIZE,
+    STRING_LENGTHS_MISSING,
+    TRANSPORT_NOT_ONE,
+    TRIGGER_RESERVED_BITS,
+    UNDEFINED_REFERENCE,
+    UNKNOWN_PORT_TYPE,
+    UNPAIRED_ENTRY,
+    VALUE_ORDER,
+    WIDTH_ZERO,
+    WRONG_PARAMETER_TYPE,
+)
+from edsconv.diagnostics import Diagnostic
 from edsconv.model import (
     MODULE,
     Assembly,
@@ -29,84 +68,6 @@ from edsconv.eds.syntax import Entry
 from edsconv.model.values import PathItem
 
 
-UNDEFINED_REFERENCE = rule("EDS301", Severity.ERROR, "C.4.1.4.8",
-                           "A ParamN, ProxyParamN, AssemN or ProxyAssemN used in the file is not defined",
-                           import_blocking=True)
-WRONG_PARAMETER_TYPE = rule("EDS302", Severity.ERROR, "C.4.1.4.9.4",
-                            "A parameter named as a connection RPI, size or path value does not have the data type "
-                            "the field evaluates to")
-UNPAIRED_ENTRY = rule("EDS303", Severity.ERROR, "C.4.1.4.6",
-                      "An EnumN, ProxyEnumN, ProxiedEnumN or ProxyParamSizeAdderN has no parameter with its number")
-GROUP_MEMBER_COUNT = rule("EDS304", Severity.ERROR, "C.4.1.4.7",
-                          "A group's Number of Members differs from the members it lists")
-DUPLICATE_CONNECTION_NAME = rule("EDS305", Severity.ERROR, "C.4.1.4.9.11",
-                                 "Two connections have the same name string")
-TRIGGER_RESERVED_BITS = rule("EDS306", Severity.ERROR, "C.4.1.4.9.2",
-                             "A trigger and transport mask sets reserved bits")
-TRANSPORT_NOT_ONE = rule("EDS307", Severity.ERROR, "C.4.1.4.9.2",
-                         "A trigger and transport mask does not set exactly one transport type")
-NO_CLASS_OR_TRIGGER = rule("EDS308", Severity.ERROR, "C.4.1.4.9.2",
-                           "A trigger and transport mask sets no class or no trigger")
-PARAMETERS_RESERVED_BITS = rule("EDS309", Severity.ERROR, "C.4.1.4.9.3",
-                                "A connection parameters mask sets reserved bits")
-RESERVED_REAL_TIME_FORMAT = rule("EDS310", Severity.ERROR, "C.4.1.4.9.3",
-                                 "A connection uses a reserved real time transfer format", import_blocking=True)
-SIZE_WITHOUT_FORMAT = rule("EDS311", Severity.ERROR, "C.4.1.4.9.6",
-                           "A connection leaves both size and format of a direction empty")
-SIZE_FORMAT_MISMATCH = rule("EDS312", Severity.WARNING, "C.4.1.4.9.5",
-                            "A connection's size differs from the size of its format assembly")
-PROXY_CONNECT_NAME_MODULE = rule("EDS313", Severity.ERROR, "C.4.1.5.3.3",
-                                 "A ProxyConnect's connection name is 'Module'")
-PARAM_RESERVED_BITS = rule("EDS314", Severity.WARNING, "C.4.1.4.6",
-                           "A parameter descriptor sets reserved bits (Table C.15)")
-VALUE_ORDER = rule("EDS315", Severity.ERROR, "C.4.1.4.6",
-                   "A parameter's minimum, maximum and default are not in order min <= default <= max")
-STRING_LENGTHS_MISSING = rule("EDS316", Severity.ERROR, "C.4.1.4.6",
-                              "A string parameter does not give its minimum and maximum length (Table C.17)")
-BIT_STRING_MIN_MAX = rule("EDS317", Severity.WARNING, "C.4.1.4.6",
-                          "A bit string parameter (BYTE, WORD, DWORD, LWORD) gives a minimum or maximum (Table C.17)")
-SCALING_ON_NON_NUMERIC = rule("EDS318", Severity.WARNING, "C.4.1.4.6",
-                              "A parameter of a non-numeric type gives scaling, link or precision fields (Table C.18)")
-SCALING_ZERO = rule("EDS319", Severity.ERROR, "C.4.1.4.6",
-                    "A parameter that supports scaling has a scaling multiplier, divisor or base of 0")
-DATA_SIZE_MISMATCH = rule("EDS320", Severity.ERROR, "C.4.1.4.6",
-                          "A parameter's Data Size does not match its data type (Table C.14)")
-ENUM_WITHOUT_DESCRIPTOR_BIT = rule("EDS321", Severity.INFO, "C.4.1.4.6",
-                                   "A parameter has an EnumN but its descriptor does not set bit 1 (supports "
-                                   "enumerated strings)")
-ASSEMBLY_RESERVED_BITS = rule("EDS322", Severity.WARNING, "C.4.1.4.8",
-                              "An assembly descriptor sets reserved bits (Table C.21)")
-EMPTY_MEMBER = rule("EDS323", Severity.ERROR, "C.4.1.4.8",
-                    "An assembly member has neither a size nor a reference")
-ASSEMBLY_SIZE_MISMATCH = rule("EDS324", Severity.ERROR, "C.4.1.4.8",
-                              "An assembly's Size differs from the total of its member sizes")
-ASSEMBLY_NOT_WHOLE_BYTES = rule("EDS325", Severity.ERROR, "C.4.1.4.8",
-                                "An assembly's members do not add up to a whole number of bytes")
-NESTED_ASSEMBLY = rule("EDS326", Severity.INFO, "C.4.1.4.8",
-                       "An assembly has another assembly as a member (nested AssemN)", import_blocking=True)
-ASSEMBLY_CYCLE = rule("EDS327", Severity.ERROR, "C.4.1.4.8",
-                      "An assembly contains itself through its members", import_blocking=True)
-PACKED_EPATH_MEMBER = rule("EDS328", Severity.ERROR, "C.4.1.4.8",
-                           "An assembly member path is a packed EPATH (no pad bytes)", import_blocking=True)
-SLOT_MASK_PAIR = rule("EDS329", Severity.ERROR, "C.4.1.5.3.2",
-                      "An assembly uses both slot mask keywords of a pair (InputSlotMask0 and InputSlotMask1 ...)")
-SLOT_MASK_WITHOUT_SIZE = rule("EDS330", Severity.ERROR, "C.4.1.5.3.2",
-                              "A slot mask member has no Member Size")
-MODULE_IN_MEMBER = rule("EDS331", Severity.ERROR, "C.4.1.5.3.2",
-                        "A ProxyAssem member reference is 'Module'")
-DUPLICATE_PORT_NUMBER = rule("EDS332", Severity.ERROR, "C.4.1.4.10",
-                             "Two ports have the same port number")
-UNKNOWN_PORT_TYPE = rule("EDS333", Severity.ERROR, "C.4.1.4.10",
-                         "A Port Type Name is neither a spec keyword nor a vendor-specific keyword")
-LEGAL_SLOT_OUT_OF_RANGE = rule("EDS334", Severity.ERROR, "C.4.1.5.2.2",
-                               "A Rack legal slot is not a slot of the chassis (0 to DefineSlotsInRack - 1)")
-WIDTH_ZERO = rule("EDS335", Severity.ERROR, "C.4.1.5.2.3",
-                  "A module's Width is 0")
-QUERY_FIELD_VALUE = rule("EDS336", Severity.ERROR, "C.4.1.5.2.4",
-                         "A Query entry has a service other than 1 or 14, or an ID size outside 1 to 16")
-SAFETY_REAL_TIME_FORMAT = rule("EDS337", Severity.WARNING, "C.4.1.4.9.3",
-                               "A connection uses real time format 5, reserved in the 2003 text and the CIP Safety "
-                               "format of later editions")
 
 
 def _node(entry: Entry | None, index: int):
@@ -137,7 +98,7 @@ def _path_references(connection: Connection) -> Iterator[PathItem]:
         yield from (item for item in connection.path if item.reference)
 
 
-@check
+@check(UNDEFINED_REFERENCE)
 def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
     for ref in iter_references(ctx.device):
         if ref.target is None:
@@ -165,7 +126,7 @@ def _connection_value_fields(connection: Connection) -> Iterator[tuple[str, int,
         yield f"{name} size", first, endpoint.size, _SIZE_TYPES
 
 
-@check
+@check(WRONG_PARAMETER_TYPE)
 def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
     for connection in ctx.device.connections.values():
         for name, index, value, allowed in _connection_value_fields(connection):
@@ -184,7 +145,7 @@ def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
                              _node(connection.entry, 14))
 
 
-@check
+@check(UNPAIRED_ENTRY)
 def unpaired_entries(ctx: Context) -> Iterator[Diagnostic]:
     """EnumN and the like name a parameter by their number (EntrySpec.pairs_with)."""
     for section in ctx.eds.sections:
@@ -203,7 +164,7 @@ def unpaired_entries(ctx: Context) -> Iterator[Diagnostic]:
 # --- groups ----------------------------------------------------------------------------
 
 
-@check
+@check(GROUP_MEMBER_COUNT)
 def group_member_counts(ctx: Context) -> Iterator[Diagnostic]:
     for group in ctx.device.groups:
         if group.entry is None or not _is_int(group.declared_members):
@@ -217,7 +178,7 @@ def group_member_counts(ctx: Context) -> Iterator[Diagnostic]:
 # --- connections -----------------------------------------------------------------------
 
 
-@check
+@check(DUPLICATE_CONNECTION_NAME)
 def connection_names(ctx: Context) -> Iterator[Diagnostic]:
     # Proxied connections describe another device (the module's file); the names
     # the user chooses from are those of Connection and ProxyConnect entries.
@@ -268,7 +229,14 @@ def _real_time_formats(ctx: Context, connection: Connection, mask: int) -> Itera
                      f"{note}", _node(connection.entry, 1))
 
 
-@check
+@check(
+    TRIGGER_RESERVED_BITS,
+    TRANSPORT_NOT_ONE,
+    NO_CLASS_OR_TRIGGER,
+    PARAMETERS_RESERVED_BITS,
+    RESERVED_REAL_TIME_FORMAT,
+    SAFETY_REAL_TIME_FORMAT,
+)
 def connection_masks(ctx: Context) -> Iterator[Diagnostic]:
     """Tables C.23 and C.24: reserved bits and values, one transport, a class and a trigger."""
     for connection in ctx.device.connections.values():
@@ -296,7 +264,7 @@ def _real_time_format(connection: Connection, direction: str) -> int | None:
     return tables.CONNECTION_PARAMETER_BITS.field(f"{direction} real time format").extract(connection.parameters)
 
 
-@check
+@check(SIZE_WITHOUT_FORMAT, SIZE_FORMAT_MISMATCH)
 def connection_sizes_and_formats(ctx: Context) -> Iterator[Diagnostic]:
     for connection in ctx.device.connections.values():
         entry = connection.entry
@@ -315,7 +283,7 @@ def connection_sizes_and_formats(ctx: Context) -> Iterator[Diagnostic]:
                                  _node(entry, size_index))
 
 
-@check
+@check(PROXY_CONNECT_NAME_MODULE)
 def proxy_connect_names(ctx: Context) -> Iterator[Diagnostic]:
     for connection in ctx.device.connections.values():
         if connection.family == "ProxyConnect" and connection.name == MODULE:
@@ -326,7 +294,7 @@ def proxy_connect_names(ctx: Context) -> Iterator[Diagnostic]:
 # --- parameters ------------------------------------------------------------------------
 
 
-@check
+@check(PARAM_RESERVED_BITS, ASSEMBLY_RESERVED_BITS)
 def descriptors(ctx: Context) -> Iterator[Diagnostic]:
     """Tables C.15 and C.21: reserved descriptor bits shall be 0."""
     for parameter in ctx.device.parameters.values():
@@ -354,7 +322,7 @@ def _bounds(parameter: Parameter) -> tuple[object, object] | None:
     return bounds[0], bounds[1]
 
 
-@check
+@check(VALUE_ORDER)
 def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
     for parameter in ctx.device.parameters.values():
         data_type = parameter.data_type
@@ -385,7 +353,7 @@ def _deferred(entry: Entry | None, index: int) -> bool:
     return _written(entry, index) and entry.fields[index].raw == MODULE
 
 
-@check
+@check(STRING_LENGTHS_MISSING, BIT_STRING_MIN_MAX)
 def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
     """Table C.17: required for strings, not allowed for bit strings."""
     for parameter in ctx.device.parameters.values():
@@ -407,7 +375,7 @@ def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
                              f"{' or '.join(given)}", _node(entry, 9 if "minimum" in given else 10))
 
 
-@check
+@check(SCALING_ON_NON_NUMERIC, SCALING_ZERO)
 def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
     scaling_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports scaling")
     for parameter in ctx.device.parameters.values():
@@ -437,7 +405,7 @@ def _expected_data_size(data_type: tables.DataType) -> int | None:
     return data_type.size if data_type.size is not None else data_type.char_size
 
 
-@check
+@check(DATA_SIZE_MISMATCH)
 def parameter_data_sizes(ctx: Context) -> Iterator[Diagnostic]:
     for parameter in ctx.device.parameters.values():
         data_type, size = parameter.data_type, parameter.data_size
@@ -450,7 +418,7 @@ def parameter_data_sizes(ctx: Context) -> Iterator[Diagnostic]:
                          f"{expected} {unit}", _node(parameter.entry, 5))
 
 
-@check
+@check(ENUM_WITHOUT_DESCRIPTOR_BIT)
 def enum_descriptor_bits(ctx: Context) -> Iterator[Diagnostic]:
     enum_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports enumerated strings")
     for parameter in ctx.device.parameters.values():
@@ -477,7 +445,7 @@ def _member_bits(assembly: Assembly, member: AssemblyMember) -> int | None:
     return None
 
 
-@check
+@check(EMPTY_MEMBER, ASSEMBLY_SIZE_MISMATCH, ASSEMBLY_NOT_WHOLE_BYTES, MODULE_IN_MEMBER)
 def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
     for assembly in ctx.device.assemblies.values():
         entry = assembly.entry
@@ -512,7 +480,7 @@ def _nested_assemblies(assembly: Assembly) -> Iterator[tuple[AssemblyMember, Ass
             yield member, member.reference.target
 
 
-@check
+@check(NESTED_ASSEMBLY, ASSEMBLY_CYCLE)
 def assembly_nesting(ctx: Context) -> Iterator[Diagnostic]:
     for assembly in ctx.device.assemblies.values():
         nested = list(_nested_assemblies(assembly))
@@ -564,7 +532,7 @@ def _packed_segment(path: tuple[PathItem, ...]) -> int | None:
     return None
 
 
-@check
+@check(PACKED_EPATH_MEMBER)
 def assembly_member_paths(ctx: Context) -> Iterator[Diagnostic]:
     for assembly in ctx.device.assemblies.values():
         for member in assembly.members:
@@ -577,7 +545,7 @@ def assembly_member_paths(ctx: Context) -> Iterator[Diagnostic]:
                                  "EPATH", _node(assembly.entry, member.field_index + 1))
 
 
-@check
+@check(SLOT_MASK_PAIR, SLOT_MASK_WITHOUT_SIZE)
 def slot_masks(ctx: Context) -> Iterator[Diagnostic]:
     masks = {keyword for pair in tables.SLOT_MASK_PAIRS for keyword in pair}
     for assembly in ctx.device.assemblies.values():
@@ -595,7 +563,7 @@ def slot_masks(ctx: Context) -> Iterator[Diagnostic]:
 # --- ports and modules -----------------------------------------------------------------
 
 
-@check
+@check(DUPLICATE_PORT_NUMBER, UNKNOWN_PORT_TYPE)
 def ports(ctx: Context) -> Iterator[Diagnostic]:
     type_spec = tables.entry_spec("Port", "Port1").fields[0]
     first_use: dict[int, int] = {}
@@ -617,7 +585,7 @@ def _modular_entry(device: Device, keyword: str) -> Entry | None:
     return section.entry(keyword) if section is not None else None
 
 
-@check
+@check(LEGAL_SLOT_OUT_OF_RANGE, WIDTH_ZERO, QUERY_FIELD_VALUE)
 def modular(ctx: Context) -> Iterator[Diagnostic]:
     modular = ctx.device.modular
     if modular is None:

@@ -21,44 +21,35 @@ from collections.abc import Iterator
 
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
-from edsconv.diagnostics import Diagnostic, Rule, Severity, rule
+from edsconv.checks.structure_rules import (
+    FIELDS_BEYOND_2003,
+    FORWARD_REFERENCE,
+    ICON_WITHOUT_HOME_URL,
+    KEYWORD_BEYOND_2003,
+    KEYWORD_STARTS_WITH_DIGIT,
+    MISSING_ENTRY,
+    MISSING_SECTION,
+    MODIFIED_BEFORE_CREATED,
+    MOD_TIME_WITHOUT_DATE,
+    NOT_A_CHOICE,
+    NOT_ETHERNETIP,
+    NO_TCP_PORT,
+    NUMBERING,
+    PUBLIC_CLASS_SUBCLASSIFIED,
+    REQUIRED_FIELD_EMPTY,
+    RESERVED_FIELD_SET,
+    SECTION_BEYOND_2003,
+    SECTION_PLACEMENT,
+    TOO_MANY_FIELDS,
+    VENDOR_ID_LEADING_ZERO,
+    VENDOR_SECTION_NOT_LAST,
+)
+from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.model.build import iter_references
 from edsconv.eds.syntax import Entry, Field, Scalar, Section, String
 
-ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 REQUIRED, RESERVED = tables.Presence.REQUIRED, tables.Presence.RESERVED
 
-MISSING_SECTION = rule("EDS201", ERROR, "C.4.1.2.1", "A required section ([File], [Device], [Device Classification]) "
-                       "is missing", import_blocking=True)
-SECTION_PLACEMENT = rule("EDS202", ERROR, "C.4.1.2.1", "[File] is not the first section, or [Device] does not "
-                         "immediately follow it")
-VENDOR_SECTION_NOT_LAST = rule("EDS203", ERROR, "C.4.1.2.2.7",
-                               "A vendor-specific section stands before a section the spec defines")
-FORWARD_REFERENCE = rule("EDS204", WARNING, "C.4.1.2.1", "An entry refers to an entry of a section placed later")
-NOT_ETHERNETIP = rule("EDS205", ERROR, "C.4.2.2.1", "No ClassN entry classifies the device as EtherNetIP",
-                      import_blocking=True)
-MISSING_ENTRY = rule("EDS206", ERROR, "C.4.1.4", "A section lacks an entry the spec requires")
-REQUIRED_FIELD_EMPTY = rule("EDS207", ERROR, "C.4.1.2.2.12", "A required field is empty or missing",
-                            import_blocking=True)
-TOO_MANY_FIELDS = rule("EDS208", ERROR, "C.4.1.2.2.12", "A single-value entry has more than one field")
-FIELDS_BEYOND_2003 = rule("EDS209", INFO, "C.4.1.2.2.12",
-                          "An entry has more fields than ISO 15745-4:2003 defines for it (kept)")
-RESERVED_FIELD_SET = rule("EDS210", WARNING, "C.4.1.2.2.12", "A reserved field is not empty")
-NOT_A_CHOICE = rule("EDS211", ERROR, "C.4.1.2.2.13", "A field holds a value outside the keywords its entry allows")
-PUBLIC_CLASS_SUBCLASSIFIED = rule("EDS212", ERROR, "C.4.1.4.4",
-                                  "A public classification (EtherNetIP, DeviceNet, ControlNet) is sub-classified")
-NUMBERING = rule("EDS213", WARNING, "C.4.1.4.4",
-                 "ClassN, GroupN, ConnectionN or RackN entries are not numbered 1, 2, 3 ... without gaps")
-MOD_TIME_WITHOUT_DATE = rule("EDS214", ERROR, "C.4.1.4.2", "ModTime is present without ModDate")
-MODIFIED_BEFORE_CREATED = rule("EDS215", WARNING, "C.4.1.4.2", "The last modification is dated before the creation")
-ICON_WITHOUT_HOME_URL = rule("EDS216", WARNING, "C.4.1.4.3", "Icon is present without a HomeURL in [File]")
-VENDOR_ID_LEADING_ZERO = rule("EDS217", ERROR, "C.4.1.2.2.11",
-                              "A vendor-specific keyword writes its vendor ID with leading zeros")
-KEYWORD_STARTS_WITH_DIGIT = rule("EDS218", ERROR, "C.4.1.2.2.10",
-                                 "A keyword starts with a digit but is not VendorID_keyword")
-KEYWORD_BEYOND_2003 = rule("EDS219", INFO, "C.4.1.2.2.9", "A keyword not defined by ISO 15745-4:2003 (kept)")
-SECTION_BEYOND_2003 = rule("EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)")
-NO_TCP_PORT = rule("EDS221", WARNING, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port")
 
 #: A vendor-specific keyword whose vendor ID has leading zeros (``0065_Foo``).
 _ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+")
@@ -125,7 +116,7 @@ def _specified_entries(ctx: Context) -> Iterator[tuple[Entry, tables.EntrySpec]]
 # --- sections -------------------------------------------------------------------------
 
 
-@check
+@check(MISSING_SECTION)
 def required_sections(ctx: Context) -> Iterator[Diagnostic]:
     """Table C.3 requires [File] and [Device]; Table C.27 adds [Device Classification]."""
     if not ctx.eds.sections:
@@ -138,7 +129,7 @@ def required_sections(ctx: Context) -> Iterator[Diagnostic]:
             yield ctx.at(MISSING_SECTION, f"the file has no [{spec.name}] section, which {table} requires")
 
 
-@check
+@check(SECTION_PLACEMENT)
 def section_placement(ctx: Context) -> Iterator[Diagnostic]:
     """[File] is the first section, [Device] the one right after it (Table C.3 placement 1, 2)."""
     order = [section.name for section in ctx.eds.sections]
@@ -155,7 +146,7 @@ def section_placement(ctx: Context) -> Iterator[Diagnostic]:
             yield ctx.at(SECTION_PLACEMENT, f"[{spec.name}] shall immediately follow [{previous.name}]", section)
 
 
-@check
+@check(VENDOR_SECTION_NOT_LAST)
 def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
     """Vendor-specific sections come after every section the spec defines (C.4.1.2.2.7)."""
     sections = ctx.eds.sections
@@ -169,7 +160,7 @@ def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
-@check
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, SECTION_BEYOND_2003)
 def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
     for section in ctx.eds.sections:
         problem = _keyword_problem(section.name)
@@ -180,7 +171,7 @@ def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
-@check
+@check(FORWARD_REFERENCE)
 def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.2.1: sections may be in any order "provided that no forward references exist".
 
@@ -209,7 +200,7 @@ def forward_references(ctx: Context) -> Iterator[Diagnostic]:
 # --- entries --------------------------------------------------------------------------
 
 
-@check
+@check(MISSING_ENTRY)
 def required_entries(ctx: Context) -> Iterator[Diagnostic]:
     """Each present section holds the entries its table marks Required (C.6, C.8, C.10, C.4.1.4.4).
 
@@ -231,7 +222,7 @@ def required_entries(ctx: Context) -> Iterator[Diagnostic]:
                                         f"{listed} ({where})", sections[0])
 
 
-@check
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003)
 def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Entry keywords: vendor IDs without leading zeros, no public keyword with a leading
     digit, and keywords the 2003 text does not define (kept, reported as information)."""
@@ -257,7 +248,7 @@ def _why_undefined(section: tables.SectionSpec, keyword: str) -> str:
     return f"is not an entry of [{section.name}] in ISO 15745-4:2003"
 
 
-@check
+@check(NUMBERING)
 def numbering(ctx: Context) -> Iterator[Diagnostic]:
     """ClassN, GroupN, ConnectionN, RackN: "numbers shall start at 1 ... and be incremented"."""
     for name, sections in _sections_by_name(ctx).items():
@@ -281,7 +272,7 @@ def numbering(ctx: Context) -> Iterator[Diagnostic]:
 # --- fields ---------------------------------------------------------------------------
 
 
-@check
+@check(REQUIRED_FIELD_EMPTY, TOO_MANY_FIELDS, FIELDS_BEYOND_2003, RESERVED_FIELD_SET)
 def field_counts(ctx: Context) -> Iterator[Diagnostic]:
     """Required fields present and not empty; no fields beyond the layout; reserved fields empty."""
     for entry, spec in _specified_entries(ctx):
@@ -314,7 +305,7 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
                                                  f"is ignored", item)
 
 
-@check
+@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003)
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
     for entry, spec in _specified_entries(ctx):
@@ -357,7 +348,7 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
 # --- classification, identity, file description ---------------------------------------
 
 
-@check
+@check(NOT_ETHERNETIP, PUBLIC_CLASS_SUBCLASSIFIED)
 def ethernetip_classification(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.2.2.1: a ClassN = EtherNetIP, without sub-classification; C.4.1.4.4: public
     classifications are never sub-classified."""
@@ -377,7 +368,7 @@ def ethernetip_classification(ctx: Context) -> Iterator[Diagnostic]:
                          entry.fields[1])
 
 
-@check
+@check(MOD_TIME_WITHOUT_DATE, MODIFIED_BEFORE_CREATED)
 def modification_date(ctx: Context) -> Iterator[Diagnostic]:
     """Table C.7: ModDate is required when ModTime is present; it should not precede CreateDate."""
     file_section = ctx.eds.section("File")
@@ -404,7 +395,7 @@ def _when(moment: tuple) -> str:
     return f"{date.isoformat()} {time.isoformat()}" if time is not None else date.isoformat()
 
 
-@check
+@check(ICON_WITHOUT_HOME_URL)
 def icon_needs_home_url(ctx: Context) -> Iterator[Diagnostic]:
     """Table C.9: the icon's location is HomeURL's folder, so Icon "shall only be present when a HomeURL exists"."""
     device_section = ctx.eds.section("Device")
@@ -415,7 +406,7 @@ def icon_needs_home_url(ctx: Context) -> Iterator[Diagnostic]:
                      icon)
 
 
-@check
+@check(NO_TCP_PORT)
 def ethernetip_port(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.2.2.2: the EtherNet/IP port of a device is a PortN of type TCP."""
     port_section = ctx.eds.section("Port")

@@ -19,8 +19,26 @@ from pathlib import Path
 from lark import Lark, Token, Transformer
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
-from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lexicon import grammar_text, lexicon
+from edsconv.eds.reader_rules import (
+    BAD_ESCAPE,
+    CANOPEN_EDS,
+    DUPLICATE_ENTRY,
+    DUPLICATE_SECTION,
+    ENTRY_OUTSIDE_SECTION,
+    LONG_PREFIX_ON_CONTINUATION,
+    MISSING_COMMA,
+    MISSING_SEMICOLON,
+    NOT_ASCII,
+    NO_SECTIONS,
+    SECTION_NAME,
+    SYNTAX_ERROR,
+    TOO_DEEP,
+    TOO_MANY_ERRORS,
+    UNICODE_ESCAPE_IN_ASCII,
+    UNTERMINATED_STRING,
+)
 from edsconv.eds.source import DecodedSource, LineIndex, decode
 from edsconv.eds.syntax import (
     Comment,
@@ -34,27 +52,6 @@ from edsconv.eds.syntax import (
     Unparsed,
 )
 
-SYNTAX_ERROR = rule("EDS001", Severity.ERROR, "C.4.1.2.2", "Text that does not follow the EDS syntax")
-MISSING_SEMICOLON = rule("EDS002", Severity.ERROR, "C.4.1.2.2.8", "An entry does not end with ';'")
-BAD_ESCAPE = rule("EDS003", Severity.ERROR, "C.4.1.3.3.5", "A string holds an escape sequence not in Table C.4")
-UNICODE_ESCAPE_IN_ASCII = rule(
-    "EDS004", Severity.ERROR, "C.4.1.3.3.5", r"A \u escape stands in an 8-bit string (valid only after L)")
-NOT_ASCII = rule("EDS005", Severity.WARNING, "C.4.1.3.2", "The file holds characters outside ASCII")
-SECTION_NAME = rule("EDS006", Severity.WARNING, "C.4.1.2.2.3",
-                    "A section name uses characters the 2003 keyword rules do not allow")
-DUPLICATE_SECTION = rule("EDS008", Severity.ERROR, "C.4.1.2.2.5", "A section appears more than once",
-                         import_blocking=True)
-DUPLICATE_ENTRY = rule("EDS009", Severity.ERROR, "C.4.1.2.2.9", "An entry keyword appears twice in one section",
-                       import_blocking=True)
-CANOPEN_EDS = rule("EDS010", Severity.ERROR, "C.4.1.1", "The file is a CANopen EDS (CiA 306), not a CIP EDS")
-ENTRY_OUTSIDE_SECTION = rule("EDS011", Severity.ERROR, "C.4.1.2.2.8", "An entry stands before the first section")
-MISSING_COMMA = rule("EDS012", Severity.ERROR, "C.4.1.2.2.12", "Two fields are not separated by a comma")
-UNTERMINATED_STRING = rule("EDS013", Severity.ERROR, "C.4.1.3.3", "A string has no closing quote on its line")
-TOO_MANY_ERRORS = rule("EDS014", Severity.ERROR, "C.4.1.2.2", "So many syntax errors that reading stopped")
-NO_SECTIONS = rule("EDS015", Severity.ERROR, "C.4.1.2.2.4", "The file has no sections", import_blocking=True)
-LONG_PREFIX_ON_CONTINUATION = rule(
-    "EDS016", Severity.WARNING, "C.4.1.3.3.4", "Only the first part of a concatenated string may carry the L prefix")
-TOO_DEEP = rule("EDS017", Severity.ERROR, "C.4.1.2.14", "Braces are nested deeper than any EDS needs")
 
 #: Syntax errors reported per file before the reader gives up.
 MAX_SYNTAX_ERRORS = 100

@@ -41,9 +41,24 @@ from edsconv.model import (
 from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String, Value, ValueKind
 from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
 
-OBSOLETE_DATA_TYPE = rule("EDS112", Severity.WARNING, "C.4.1.4.6",
-                          "A parameter names its data type by an obsolete Table C.16 identifier")
-UNKNOWN_DATA_TYPE = rule("EDS113", Severity.ERROR, "C.4.1.4.6", "A parameter's data type code is not a CIP data type")
+OBSOLETE_DATA_TYPE = rule(
+    "EDS112", Severity.WARNING, "C.4.1.4.6", "A parameter names its data type by an obsolete Table C.16 identifier",
+    explanation="""
+        A parameter names its data type with an obsolete Table C.16 identifier (`2` for
+        UINT) instead of the CIP code (`0xC7`). The type is understood.
+    """,
+    bad='`Param1 = 0,,,0x0000, 2, 2, "Speed", "", "", 0, 100, 0;`',
+    good='`Param1 = 0,,,0x0000, 0xC7, 2, "Speed", "", "", 0, 100, 0;`',
+)
+UNKNOWN_DATA_TYPE = rule(
+    "EDS113", Severity.ERROR, "C.4.1.4.6", "A parameter's data type code is not a CIP data type",
+    explanation="""
+        A parameter's data type code is neither a CIP data type code nor an obsolete
+        identifier; its minimum, maximum and default cannot be interpreted.
+    """,
+    bad='`Param1 = 0,,,0x0000, 0xEE, 2, "Speed", "", "", 0, 100, 0;`',
+    good='`Param1 = 0,,,0x0000, 0xC7, 2, "Speed", "", "", 0, 100, 0;`',
+)
 
 _REFERENCE_KINDS = ("ParamRef", "ProxyParamRef", "AssemRef", "ProxyAssemRef")
 _REFERENCE = {kind: re.compile(tables.FIELD_VALUE_KINDS[kind]) for kind in _REFERENCE_KINDS}

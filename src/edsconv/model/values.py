@@ -15,26 +15,130 @@ import struct
 from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
-from edsconv.diagnostics import Rule, Severity, rule
+from edsconv.diagnostics import Rule, Severity, block, rule
 from edsconv.eds.syntax import Group, Scalar, String, Value, ValueKind
 
-WRONG_KIND = rule("EDS101", Severity.ERROR, "C.4.1.3", "A field holds a value of the wrong kind for its data type")
-OUT_OF_RANGE = rule("EDS102", Severity.ERROR, "C.4.1.3.7", "A number lies outside the range of its data type")
-LEADING_ZERO = rule("EDS103", Severity.ERROR, "C.4.1.3.7", "A decimal number is written with leading zeros")
-HEX_TOO_LONG = rule("EDS104", Severity.ERROR, "C.4.1.3.7",
-                    "A hexadecimal number has more digits than its data type allows")
-BAD_DATE = rule("EDS105", Severity.ERROR, "C.4.1.3.11", "A date is not a valid mm-dd-yyyy EDS_Date")
-BAD_TIME = rule("EDS106", Severity.ERROR, "C.4.1.3.12", "A time is not a valid hh:mm:ss EDS_Time_Of_Day")
-BAD_REVISION = rule("EDS107", Severity.ERROR, "C.4.1.3.13", "A revision is not a valid Major.Minor EDS_Revision")
-REAL_NOTATION = rule("EDS108", Severity.ERROR, "C.4.1.3.10",
-                     "A floating point value breaks the digit limits of the REAL/LREAL notation")
-BAD_EPATH = rule("EDS109", Severity.ERROR, "C.4.1.3.6", "A path is not groups of two hexadecimal digits")
-BAD_URL = rule("EDS110", Severity.WARNING, "C.4.1.3.14", "A URL does not use the http, ftp or file scheme")
-BAD_STRINGI = rule("EDS111", Severity.ERROR, "C.4.1.3.5", "A STRINGI value is not shaped as the spec defines")
-DATE_BEYOND_2003 = rule("EDS114", Severity.WARNING, "C.4.1.3.11",
-                        "A date is readable but breaks the 2003 EDS_Date notation (one-digit parts, year before 1996)")
-REVISION_BEYOND_2003 = rule("EDS115", Severity.WARNING, "C.4.1.3.13",
-                            "A revision has more than one digit per part, beyond the 2003 EDS_Revision limit")
+WRONG_KIND = rule(
+    "EDS101", Severity.ERROR, "C.4.1.3", "A field holds a value of the wrong kind for its data type",
+    explanation="""
+        The field holds a value of the wrong kind: a string where a number is needed, a
+        number where a string is needed, a keyword that is no reference.
+    """,
+    bad=block("""
+        [Device]
+                VendCode = "65535";
+    """),
+    good=block("""
+        [Device]
+                VendCode = 65535;
+    """),
+)
+OUT_OF_RANGE = rule(
+    "EDS102", Severity.ERROR, "C.4.1.3.7", "A number lies outside the range of its data type",
+    explanation="""
+        A number lies outside the range of its data type (USINT 0 to 255, INT -32768 to
+        32767, ...).
+    """,
+    bad="`MajRev = 256;` (USINT).",
+    good="`MajRev = 255;`",
+)
+LEADING_ZERO = rule(
+    "EDS103", Severity.ERROR, "C.4.1.3.7", "A decimal number is written with leading zeros",
+    explanation="""
+        A decimal number is written with leading zeros (`0254`), which C.4.1.3.7 forbids;
+        hexadecimal may have them (`0x00FE`).
+    """,
+    bad="`ProdCode = 06402;`.",
+    good="`ProdCode = 6402;`",
+)
+HEX_TOO_LONG = rule(
+    "EDS104", Severity.ERROR, "C.4.1.3.7", "A hexadecimal number has more digits than its data type allows",
+    explanation="""
+        A hexadecimal number has more digits than allowed: `0x` and at most 8 digits
+        (16 for 64-bit types).
+    """,
+    bad="`VendCode = 0x0000000FE;`.",
+    good="`VendCode = 0x000000FE;`",
+)
+BAD_DATE = rule(
+    "EDS105", Severity.ERROR, "C.4.1.3.11", "A date is not a valid mm-dd-yyyy EDS_Date",
+    explanation="""
+        A date is not an EDS_Date `mm-dd-yyyy` (or `mm-dd-yy` with 96 to 99), or not a
+        day of the calendar.
+    """,
+    bad="`CreateDate = 13-11-2008;`.",
+    good="`CreateDate = 11-13-2008;`",
+)
+BAD_TIME = rule(
+    "EDS106", Severity.ERROR, "C.4.1.3.12", "A time is not a valid hh:mm:ss EDS_Time_Of_Day",
+    explanation="A time is not an EDS_Time_Of_Day `hh:mm:ss` from 00:00:00 to 23:59:59.",
+    bad="`CreateTime = 24:00:00;`.",
+    good="`CreateTime = 23:59:59;`",
+)
+BAD_REVISION = rule(
+    "EDS107", Severity.ERROR, "C.4.1.3.13", "A revision is not a valid Major.Minor EDS_Revision",
+    explanation="A revision is not `Major.Minor`, or is 0.0, which the spec declares invalid.",
+    bad="`Revision = 0.0;`.",
+    good="`Revision = 1.0;`",
+)
+REAL_NOTATION = rule(
+    "EDS108", Severity.ERROR, "C.4.1.3.10", "A floating point value breaks the digit limits of the REAL/LREAL notation",
+    explanation="""
+        A REAL or LREAL value breaks the digit limits of its notation: 16 digits in
+        decimal notation; 11 (REAL) or 16 (LREAL) mantissa digits and 4 exponent
+        digits in scientific notation.
+    """,
+    bad="`1.23456789012345678` for a REAL.",
+    good="`1.234567`",
+)
+BAD_EPATH = rule(
+    "EDS109", Severity.ERROR, "C.4.1.3.6", "A path is not groups of two hexadecimal digits",
+    explanation="""
+        A path (EPATH) is not groups of two hexadecimal digits separated by spaces
+        (connection and assembly paths may also hold `[ParamN]` and SLOT keywords).
+    """,
+    bad='`"20 4 24 01"`.',
+    good='`"20 04 24 01"`',
+)
+BAD_URL = rule(
+    "EDS110", Severity.WARNING, "C.4.1.3.14", "A URL does not use the http, https, ftp or file scheme",
+    explanation="""
+        A URL has no `http://`, `https://`, `ftp://` or `file://` scheme (https postdates
+        the 2003 text and is accepted).
+    """,
+    bad='`HomeURL = "www.example.com";`.',
+    good='`HomeURL = "https://www.example.com";`',
+)
+BAD_STRINGI = rule(
+    "EDS111", Severity.ERROR, "C.4.1.3.5", "A STRINGI value is not shaped as the spec defines",
+    explanation="""
+        A STRINGI value is not `{count, {"lng", type, charset, "text"}, ...}` with a
+        three-letter language code, a string type code (0xD0, 0xD5, 0xD9, 0xDA) and as
+        many languages as the count says.
+    """,
+    bad='`{2, {"eng",0xD0,4,"Speed"}}`.',
+    good='`{1, {"eng",0xD0,4,"Speed"}}`',
+)
+DATE_BEYOND_2003 = rule(
+    "EDS114", Severity.WARNING, "C.4.1.3.11",
+    "A date is readable but breaks the 2003 EDS_Date notation (one-digit parts, year before 1996)",
+    explanation="""
+        A date is readable but breaks the 2003 notation: a one-digit month or day, or a
+        year before 1996. The date is used as written.
+    """,
+    bad="`CreateDate = 06-6-2001;`.",
+    good="`CreateDate = 06-06-2001;`",
+)
+REVISION_BEYOND_2003 = rule(
+    "EDS115", Severity.WARNING, "C.4.1.3.13",
+    "A revision has more than one digit per part, beyond the 2003 EDS_Revision limit",
+    explanation="""
+        A revision has more than one digit in a part (`2.11`); the 2003 text allows 0 to
+        9 each. Read as major 2, minor 11, as configuration tools do.
+    """,
+    bad="`Revision = 2.11;`.",
+    good="`Revision = 2.1;`",
+)
 
 
 class ValueProblem(ValueError):

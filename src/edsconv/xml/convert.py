@@ -26,9 +26,28 @@ from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
 from edsconv.model import Device
 from edsconv.xml.common import Header, InvalidProfile, header_element, serialise, write_atomically
 
-WRAPPER_NOT_FOUND = rule("XML101", Severity.ERROR, "C.2.2.1",
-                         "The EDS a wrapper profile references is not next to it")
-NOT_A_PROFILE = rule("XML102", Severity.ERROR, "C.2.1", "The file is not a profile xml2eds can read")
+WRAPPER_NOT_FOUND = rule(
+    "XML101", Severity.ERROR, "C.2.2.1", "The EDS a wrapper profile references is not next to it",
+    explanation="""
+        An EDS wrapper profile carries no device data: its ExternalProfileHandle names
+        an EDS (Table C.2: by DescText, Revision and HomeURL with `FILEINFO`, or by
+        vendor, device type, product code and revision with `DEVICEINFO`). xml2eds
+        looks for that EDS in the wrapper's directory; this rule says it is not there,
+        and the message says what the wrapper references.
+    """,
+    bad="`device_wrapper.xml` alone in a directory.",
+    good="`device_wrapper.xml` beside the `io_adapter.eds` it names.",
+)
+NOT_A_PROFILE = rule(
+    "XML102", Severity.ERROR, "C.2.1", "The file is not a profile xml2eds can read",
+    explanation="""
+        The file is a valid ISO 15745 profile, but not one xml2eds reads: only the
+        EtherNet/IP device and communication network profiles and the EDS wrapper
+        profiles describe an EDS (an ADS-net or FL-net profile does not).
+    """,
+    bad="`edsconv xml2eds flnet_device.xml`.",
+    good="`edsconv xml2eds adapter_device.xml adapter_commnet.xml`",
+)
 
 #: Table C.2: WrapperReference values, by the --reference option.
 WRAPPER_REFERENCES = {"fileinfo": "FILEINFO", "deviceinfo": "DEVICEINFO"}

@@ -55,10 +55,30 @@ from edsconv.eds.syntax import Scalar, String
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
 
-BAD_DEVICE_VALUE = rule("XML201", Severity.WARNING, "C.2.1.2",
-                        "A device profile element holds a value edsconv cannot read; the model field stays empty")
-BAD_EXTENSION = rule("XML202", Severity.WARNING, "edsconv",
-                     "An edsconv extension element of a device profile cannot be read and is ignored")
+BAD_DEVICE_VALUE = rule(
+    "XML201", Severity.WARNING, "C.2.1.2",
+    "A device profile element holds a value edsconv cannot read; the model field stays empty",
+    explanation="""
+        A device profile holds a value edsconv cannot read into the model (for example
+        a DataType that is neither a hexadecimal code nor a path); that field of the
+        model stays empty and the EDS written by xml2eds leaves it out. Profiles that
+        edsconv writes never trigger it.
+    """,
+    bad="`<DataType>word</DataType>`.",
+    good="`<DataType>C7</DataType>`",
+)
+BAD_EXTENSION = rule(
+    "XML202", Severity.WARNING, "edsconv",
+    "An edsconv extension element of a device profile cannot be read and is ignored",
+    clause_note="edsconv extension namespace",
+    explanation="""
+        An element of edsconv's extension namespace (`urn:x-edsconv:eds-extensions:1`)
+        in a device profile cannot be read (hand-edited or from another version) and is
+        ignored; see docs/mapping.md for the elements.
+    """,
+    bad='`<edsconv:Value path="parameters.Param1.default" kind="nonsense">1</edsconv:Value>`',
+    good='`<edsconv:Value path="parameters.Param1.default" kind="int">1</edsconv:Value>`',
+)
 
 #: The Device attributes the device profile carries (the rest is the network profile's).
 DEVICE_PROFILE_PARTS = ("file", "identity", "classifications", "param_class", "parameters", "groups",

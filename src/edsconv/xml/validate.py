@@ -16,22 +16,102 @@ from pathlib import Path
 import click
 from lxml import etree
 
-from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.diagnostics import Diagnostic, Severity, block, has_errors, rule
 from edsconv.report import format_json
 from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
 from edsconv.xml.safe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
 
-NOT_WELL_FORMED = rule("XML001", Severity.ERROR, "XML 1.0", "the file is not well-formed XML")
-UNSAFE_XML = rule("XML002", Severity.ERROR, "ISO 15745-1",
-                  "the file declares entities (billion laughs, XXE); refused without expanding them")
-SCHEMA_VIOLATION = rule("XML003", Severity.ERROR, "ISO 15745-4",
-                        "the profile does not conform to the schema of its kind")
-UNKNOWN_KIND = rule("XML004", Severity.ERROR, "ISO 15745-4",
-                    "the header's ProfileClassID and ProfileTechnology name no known profile kind")
-NOT_VALIDATED = rule("XML005", Severity.INFO, "ISO 15745-1",
-                     "a recognised ISO 15745 container (POWERLINK XDD) for which edsconv has no schema")
-TOO_LARGE = rule("XML006", Severity.ERROR, "edsconv",
-                 "the file exceeds the input size limit and was not read")
+NOT_WELL_FORMED = rule(
+    "XML001", Severity.ERROR, "XML 1.0", "The file is not well-formed XML",
+    explanation="The file is not well-formed XML; nothing else is checked.",
+    bad=block("""
+        <ISO15745Profile><ProfileHeader></ISO15745Profile>
+    """, "xml"),
+    good=block("""
+        <ISO15745Profile><ProfileHeader></ProfileHeader></ISO15745Profile>
+    """, "xml"),
+)
+UNSAFE_XML = rule(
+    "XML002", Severity.ERROR, "ISO 15745-1",
+    "The file declares entities (billion laughs, XXE); refused without expanding them",
+    explanation="""
+        The file declares entities in a document type declaration (the "billion
+        laughs" and external entity attacks). edsconv refuses it without expanding
+        anything; an ISO 15745 profile needs no DTD.
+    """,
+    bad=block("""
+        <!DOCTYPE ISO15745Profile [<!ENTITY vendor SYSTEM "file:///etc/passwd">]>
+        <ISO15745Profile>&vendor;</ISO15745Profile>
+    """, "xml"),
+    good=block("""
+        <ISO15745Profile>...</ISO15745Profile>
+    """, "xml"),
+)
+SCHEMA_VIOLATION = rule(
+    "XML003", Severity.ERROR, "ISO 15745-4", "The profile does not conform to the schema of its kind",
+    clause_note="the clause of the schema of the profile's kind",
+    explanation="""
+        The profile does not conform to the schema of its kind. The message names the
+        problem and ends with the XPath of the offending element.
+    """,
+    bad="""
+        a header without its required ProfileIdentification.
+
+        ```xml
+        <ProfileHeader>
+          <ProfileRevision>1.0</ProfileRevision>
+          ...
+        </ProfileHeader>
+        ```
+    """,
+    good=block("""
+        <ProfileHeader>
+          <ProfileIdentification>Example adapter</ProfileIdentification>
+          <ProfileRevision>1.0</ProfileRevision>
+          ...
+        </ProfileHeader>
+    """, "xml"),
+)
+UNKNOWN_KIND = rule(
+    "XML004", Severity.ERROR, "ISO 15745-4",
+    "The header's ProfileClassID and ProfileTechnology name no known profile kind",
+    explanation="""
+        The header's ProfileClassID and ProfileTechnology name no known profile kind, so
+        no schema is chosen. Correct the header, or name the schema with `--schema`.
+    """,
+    bad=block("""
+        <ProfileClassID>Device</ProfileClassID>
+        <ISO15745Reference><ProfileTechnology>DeviceNet</ProfileTechnology></ISO15745Reference>
+    """, "xml"),
+    good=block("""
+        <ProfileClassID>Device</ProfileClassID>
+        <ISO15745Reference><ProfileTechnology>CIP</ProfileTechnology></ISO15745Reference>
+    """, "xml"),
+)
+NOT_VALIDATED = rule(
+    "XML005", Severity.INFO, "ISO 15745-1",
+    "A recognised ISO 15745 container (POWERLINK XDD) for which edsconv has no schema",
+    explanation="""
+        A recognised ISO 15745 container, a POWERLINK XDD (`ISO15745ProfileContainer`),
+        for which edsconv has no schema: it is reported and not validated.
+    """,
+    bad=block("""
+        <ISO15745ProfileContainer xmlns="http://www.ethernet-powerlink.org">...</ISO15745ProfileContainer>
+    """, "xml"),
+    good=block("""
+        <ISO15745Profile>...</ISO15745Profile>
+    """, "xml"),
+    labels=("Triggers", "Does not (a profile edsconv has a schema for)"),
+)
+TOO_LARGE = rule(
+    "XML006", Severity.ERROR, "edsconv", "The file exceeds the input size limit and was not read",
+    explanation="""
+        The file exceeds the input size limit (64 MiB) and was not read. Real profiles
+        are far smaller; a file this large is most likely not a profile.
+    """,
+    bad="a 100 MiB file.",
+    good="any profile under 64 MiB.",
+)
 
 POWERLINK_XDD = kind_named("powerlink-xdd")
 

@@ -1,0 +1,344 @@
+"""The rules the file-structure checks report (EDS201-EDS221), each with its documentation.
+
+The checks are in :mod:`edsconv.checks.structure`; docs/rules.md is generated from these definitions
+(``edsconv rules --format markdown``). They have a module of their own because they outgrow the checks.
+"""
+
+from __future__ import annotations
+
+from edsconv.diagnostics import Severity, block, rule
+
+ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
+
+MISSING_SECTION = rule(
+    "EDS201", ERROR, "C.4.1.2.1", "A required section ([File], [Device], [Device Classification]) is missing",
+    import_blocking=True,
+    clause_note="Tables C.3, C.27",
+    explanation="""
+        A required section is missing: `[File]` and `[Device]` (Table C.3) and, in an
+        EtherNet/IP EDS, `[Device Classification]` (Table C.27). Reported at the file
+        start; not reported for a file without any section (EDS015 says that).
+    """,
+    bad=block("""
+        [File]
+                DescText = "Adapter"; CreateDate = 01-02-2020; CreateTime = 10:00:00; Revision = 1.0;
+        [Device Classification]
+                Class1 = EtherNetIP;            $ no [Device]
+    """),
+    good="the same file with its `[Device]` section.",
+)
+SECTION_PLACEMENT = rule(
+    "EDS202", ERROR, "C.4.1.2.1", "[File] is not the first section, or [Device] does not immediately follow it",
+    clause_note="Table C.3 placement",
+    explanation="`[File]` shall be the first section and `[Device]` shall immediately follow it.",
+    bad=block("""
+        [File]
+                ...
+        [Device Classification]
+                Class1 = EtherNetIP;
+        [Device]                                $ not right after [File]
+                ...
+    """),
+    good="`[File]`, `[Device]`, then `[Device Classification]` and the other sections.",
+)
+VENDOR_SECTION_NOT_LAST = rule(
+    "EDS203", ERROR, "C.4.1.2.2.7", "A vendor-specific section stands before a section the spec defines",
+    explanation="""
+        A vendor-specific section (`[VendorID_keyword]`) stands before a section the
+        spec defines; vendor sections come last.
+    """,
+    bad=block("""
+        [65535_Extra]
+                65535_Note = 1;
+        [Params]
+                Param1 = ...;
+    """),
+    good="`[Params]` first, `[65535_Extra]` after it.",
+)
+FORWARD_REFERENCE = rule(
+    "EDS204", WARNING, "C.4.1.2.1", "An entry refers to an entry of a section placed later",
+    explanation="""
+        Optional sections may be in any order "provided that no forward references
+        exist": an entry names an entry of a section that comes later in the file
+        (a connection naming an assembly or parameter, an assembly member naming a
+        parameter, a group naming a parameter). The message gives both lines. Reported
+        once per pair of sections: moving the referenced section up fixes them all.
+    """,
+    bad=block("""
+        [Connection Manager]
+                Connection1 = 0x04010002, 0x44640405, , 2, Assem2, , 2, Assem1, , , , ,
+                              "Owner", "", "20 04 24 01 2C 02 2C 01";
+        [Assembly]
+                Assem1 = "In", "", 2, 0x0000, , , 16, ;
+                Assem2 = "Out", "", 2, 0x0000, , , 16, ;
+    """),
+    good="`[Assembly]` before `[Connection Manager]`.",
+)
+NOT_ETHERNETIP = rule(
+    "EDS205", ERROR, "C.4.2.2.1", "No ClassN entry classifies the device as EtherNetIP",
+    import_blocking=True,
+    explanation="""
+        No `ClassN` entry of `[Device Classification]` is `EtherNetIP`. An EtherNet/IP
+        EDS needs one. A file classified only under DeviceNet or ControlNet is the EDS
+        of that network and is not reported.
+    """,
+    bad=block("""
+        [Device Classification]
+                Class1 = 65535_Tool;
+    """),
+    good=block("""
+        [Device Classification]
+                Class1 = EtherNetIP;
+                Class2 = 65535_Tool;
+    """),
+)
+MISSING_ENTRY = rule(
+    "EDS206", ERROR, "C.4.1.4", "A section lacks an entry the spec requires",
+    clause_note="Tables C.6, C.8, C.10; C.4.1.4.4",
+    explanation="""
+        A section lacks an entry its table marks Required: `DescText`, `CreateDate`,
+        `CreateTime`, `Revision` in `[File]`; `VendCode`, `VendName`, `ProdType`,
+        `ProdTypeStr`, `ProdCode`, `MajRev`, `MinRev`, `ProdName` in `[Device]`; the
+        three entries of `[ParamClass]`; a `ClassN` in `[Device Classification]`.
+        One diagnostic per section, at its header, names every missing entry.
+    """,
+    bad=block("""
+        [File]
+                DescText = "Adapter";
+                CreateDate = 01-02-2020;
+                Revision = 1.0;                 $ no CreateTime
+    """),
+    good="the same section with `CreateTime = 10:00:00;`.",
+)
+REQUIRED_FIELD_EMPTY = rule(
+    "EDS207", ERROR, "C.4.1.2.2.12", "A required field is empty or missing",
+    import_blocking=True,
+    explanation="""
+        A field the entry's table marks Required is empty, or the entry ends before it.
+        Every entry with a layout in the spec is checked (ParamN field 1, 4-9, 12;
+        ConnectionN fields 1, 2, 13-15; PortN fields 1 and 4 ...). A string that is
+        empty by meaning is written `""`, not left out. ProxiedParamN, ProxiedAssemN and
+        ProxiedConnectN are exempt: they only supply the fields their Proxy entry marks
+        `Module` (C.4.1.5.3).
+    """,
+    bad=block("""
+        [Port]
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", ;      $ Port Number empty
+    """),
+    good=block("""
+        [Port]
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1;
+    """),
+)
+TOO_MANY_FIELDS = rule(
+    "EDS208", ERROR, "C.4.1.2.2.12", "A single-value entry has more than one field",
+    explanation="""
+        An entry that holds one value (the entries of `[File]`, `[Device]`,
+        `[ParamClass]` and the single-value `[Assembly]`/`[Modular]` entries) has more
+        than one field.
+    """,
+    bad=block("""
+        [File]
+                DescText = "Test", "adapter";
+    """),
+    good=block("""
+        [File]
+                DescText = "Test adapter";
+    """),
+)
+FIELDS_BEYOND_2003 = rule(
+    "EDS209", INFO, "C.4.1.2.2.12", "An entry has more fields than ISO 15745-4:2003 defines for it (kept)",
+    explanation="""
+        An entry with a fixed layout of several fields has more fields than
+        ISO 15745-4:2003 defines. Later CIP editions append fields (CIP Safety
+        connections have 17); edsconv keeps them and does not interpret them.
+    """,
+    bad=block("""
+        Connection1 = 0x04010002, 0x44640405, , 2, Assem2, , 2, Assem1, , , , ,
+                      "Owner", "", "20 04 24 01 2C 02 2C 01", 1;
+    """),
+    good="the 15 fields of Table C.22.",
+    labels=("Bad (for the 2003 text)", "Good"),
+)
+RESERVED_FIELD_SET = rule(
+    "EDS210", WARNING, "C.4.1.2.2.12", "A reserved field is not empty",
+    clause_note="Tables C.20, C.25, C.26",
+    explanation="""
+        A reserved field is not empty: fields 5 and 6 of `AssemN` and `PortN`, fields
+        6-8 of `RackN`. Tools ignore the value. In an `AssemN` it often means the
+        member pairs start two fields too early.
+    """,
+    bad=block("""
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1, 0x00;
+    """),
+    good=block("""
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1;
+    """),
+)
+NOT_A_CHOICE = rule(
+    "EDS211", ERROR, "C.4.1.2.2.13", "A field holds a value outside the keywords its entry allows",
+    explanation="""
+        A field limited to a list of keywords or values holds another one:
+        `ExternIDExactMatch` is `Yes` or `No`, `ExcludeFromAdapterRackConnection` is
+        `"Yes"` or `"No"`, ParamN field 1 is `0`, the Query service is 1 or 14. The open
+        keyword lists (the first field of `ClassN` and `PortN`, which vendors may
+        extend) get EDS219 instead.
+    """,
+    bad=block("""
+        [Modular]
+                ExternIDExactMatch = Maybe;
+    """),
+    good=block("""
+        [Modular]
+                ExternIDExactMatch = No;
+    """),
+)
+PUBLIC_CLASS_SUBCLASSIFIED = rule(
+    "EDS212", ERROR, "C.4.1.4.4", "A public classification (EtherNetIP, DeviceNet, ControlNet) is sub-classified",
+    clause_note="and C.4.2.2.1",
+    explanation="""
+        A public classification (`EtherNetIP`, `DeviceNet`, `ControlNet`) has
+        sub-classification fields; their sub-classification is reserved. Vendor
+        classifications may be sub-classified.
+    """,
+    bad=block("""
+                Class1 = EtherNetIP, Adapter;
+    """),
+    good=block("""
+                Class1 = EtherNetIP;
+                Class2 = 65535_Tool, Adapter;
+    """),
+)
+NUMBERING = rule(
+    "EDS213", WARNING, "C.4.1.4.4",
+    "ClassN, GroupN, ConnectionN or RackN entries are not numbered 1, 2, 3 ... without gaps",
+    clause_note="and C.4.1.4.7, C.4.1.4.9, C.4.1.5.2.3",
+    explanation="""
+        `ClassN`, `GroupN`, `ConnectionN` and `RackN` entries are numbered from 1 and
+        incremented by one; a number is missing or the first is not 1. Reported at the
+        entry after the gap. (`ProxyConnect`/`ProxiedConnect` numbers are free.)
+    """,
+    bad=block("""
+                Class1 = EtherNetIP;
+                Class3 = 65535_Tool;
+    """),
+    good=block("""
+                Class1 = EtherNetIP;
+                Class2 = 65535_Tool;
+    """),
+)
+MOD_TIME_WITHOUT_DATE = rule(
+    "EDS214", ERROR, "C.4.1.4.2", "ModTime is present without ModDate",
+    clause_note="Table C.7",
+    explanation="""
+        `ModTime` is present but `ModDate` is not; Table C.7 requires the date when the
+        time is given.
+    """,
+    bad=block("""
+                ModTime = 11:00:00;
+    """),
+    good=block("""
+                ModDate = 01-03-2020;
+                ModTime = 11:00:00;
+    """),
+)
+MODIFIED_BEFORE_CREATED = rule(
+    "EDS215", WARNING, "C.4.1.4.2", "The last modification is dated before the creation",
+    explanation="""
+        The last modification (`ModDate`, with `ModTime` when both times are given) is
+        before the creation (`CreateDate`, `CreateTime`).
+    """,
+    bad=block("""
+                CreateDate = 01-02-2020;
+                CreateTime = 10:00:00;
+                ModDate = 01-01-2020;
+    """),
+    good="`ModDate = 01-02-2020;` or later.",
+)
+ICON_WITHOUT_HOME_URL = rule(
+    "EDS216", WARNING, "C.4.1.4.3", "Icon is present without a HomeURL in [File]",
+    clause_note="Table C.9",
+    explanation="""
+        `Icon` names a file relative to the folder of `HomeURL`, and "shall only be
+        present when a HomeURL keyword exists"; `[File]` has no `HomeURL`.
+    """,
+    bad=block("""
+        [Device]
+                Icon = "adapter.ico";           $ and no HomeURL in [File]
+    """),
+    good='`HomeURL = "http://www.example.com/eds/adapter.eds";` in `[File]`.',
+)
+VENDOR_ID_LEADING_ZERO = rule(
+    "EDS217", ERROR, "C.4.1.2.2.11", "A vendor-specific keyword writes its vendor ID with leading zeros",
+    explanation="""
+        A vendor-specific keyword (section, entry or field keyword) writes its vendor ID
+        with leading zeros; the ID is decimal without leading zeros.
+    """,
+    bad=block("""
+        [0065_Extra]
+                0065_Note = 1;
+    """),
+    good=block("""
+        [65_Extra]
+                65_Note = 1;
+    """),
+)
+KEYWORD_STARTS_WITH_DIGIT = rule(
+    "EDS218", ERROR, "C.4.1.2.2.10", "A keyword starts with a digit but is not VendorID_keyword",
+    explanation="""
+        A keyword starts with a digit but is not `VendorID_keyword`; public keywords
+        never begin with a digit.
+    """,
+    bad=block("""
+                1Note = 1;
+    """),
+    good=block("""
+                1_Note = 1;
+    """),
+)
+KEYWORD_BEYOND_2003 = rule(
+    "EDS219", INFO, "C.4.1.2.2.9", "A keyword not defined by ISO 15745-4:2003 (kept)",
+    explanation="""
+        A keyword that ISO 15745-4:2003 does not define: an entry keyword of a section
+        the 2003 text defines (`IconContents`, `AssemExaN`, `MaxInst` in
+        `[Connection Manager]`, the reserved `VariantN` of `[Assembly]`), or a first
+        field of `ClassN`/`PortN` outside the 2003 list (`Safety`). Later CIP editions
+        define many of them; edsconv keeps them as they are.
+    """,
+    bad=block("""
+        [Device]
+                IconContents = "...";
+    """),
+    good="vendor-specific keywords (`65535_IconContents`).",
+    labels=("Example", "Not reported"),
+)
+SECTION_BEYOND_2003 = rule(
+    "EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)",
+    explanation="""
+        A section that ISO 15745-4:2003 does not define and that is not vendor-specific:
+        `[Capacity]`, the object class sections (`[TCP/IP Interface Class]`,
+        `[DLR Class]` ...), DeviceNet's `[IO_Info]`. Kept as it is.
+    """,
+    bad=block("""
+        [Capacity]
+                MaxIOConnections = 4;
+    """),
+    good="`[65535_Capacity]`.",
+    labels=("Example", "Not reported"),
+)
+NO_TCP_PORT = rule(
+    "EDS221", WARNING, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port",
+    explanation="""
+        The device is classified `EtherNetIP` and has a `[Port]` section, but no `PortN`
+        has the port type `TCP`, the type of an EtherNet/IP port.
+    """,
+    bad=block("""
+        [Port]
+                Port1 = DeviceNet, "DeviceNet", "20 03 24 01", 2;
+    """),
+    good=block("""
+        [Port]
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1;
+                Port2 = DeviceNet, "DeviceNet", "20 03 24 01", 2;
+    """),
+)

@@ -1,4 +1,4 @@
-"""``edsconv lint`` and ``edsconv rules``.
+"""Linting many EDS files: what ``edsconv lint`` runs.
 
 :func:`lint_paths` finds the EDS files below the given paths, checks each one
 (:func:`lint_file`) on every core when there are enough of them, and returns
@@ -7,7 +7,7 @@ cannot be read, or on which edsconv itself fails, gives an ``EDS000``
 diagnostic: one broken file never stops the run.
 
 Heavy imports (rich, concurrent.futures) happen inside the functions that need
-them: the command line imports this module only when ``lint`` or ``rules`` runs.
+them.
 """
 
 from __future__ import annotations
@@ -18,11 +18,9 @@ import traceback
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
-import click
-
-from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.diagnostics import Diagnostic, Severity, rule
 from edsconv.eds.reader import load
-from edsconv.report import FORMATTERS, FileReport, all_rules
+from edsconv.report import FileReport
 from edsconv.eds.syntax import EdsFile
 
 INTERNAL_ERROR = rule("EDS000", Severity.ERROR, "edsconv",
@@ -152,76 +150,3 @@ def promote_warnings(reports: Iterable[FileReport]) -> None:
         for d in report.diagnostics:
             if d.severity is Severity.WARNING:
                 d.severity = Severity.ERROR
-
-
-# --- commands -------------------------------------------------------------------------------
-def _codes(ctx: click.Context, param: click.Parameter, value: tuple[str, ...]) -> tuple[str, ...]:
-    """Comma-separated codes or prefixes, each matching at least one rule."""
-    codes = tuple(c.strip().upper() for v in value for c in v.split(",") if c.strip())
-    if codes:
-        known = [r.code for r in all_rules()]
-        unknown = [c for c in codes if not any(k.startswith(c) for k in known)]
-        if unknown:
-            raise click.BadParameter(f"no rule code starts with {', '.join(unknown)} (see 'edsconv rules')")
-    return codes
-
-
-@click.command("lint")
-@click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True, path_type=Path))
-@click.option("--format", "output_format", type=click.Choice(list(FORMATTERS)), default="text", show_default=True,
-              help="text: path:line:col: CODE message [clause]; json; sarif (2.1.0, for code scanning); "
-              "github (workflow annotations).")
-@click.option("--select", multiple=True, callback=_codes, metavar="CODES",
-              help="Report only these codes or code prefixes (comma-separated, e.g. EDS0,EDS101).")
-@click.option("--ignore", multiple=True, callback=_codes, metavar="CODES",
-              help="Do not report these codes or code prefixes; the longer matching prefix wins over --select.")
-@click.option("--warnings-as-errors", is_flag=True, help="Report warnings as errors, and fail on them.")
-@click.option("--jobs", "-j", type=click.IntRange(min=1), default=None,
-              help="Worker processes for many files [default: every core].")
-def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str, ...], ignore: tuple[str, ...],
-                 warnings_as_errors: bool, jobs: int | None) -> int:
-    """Check EDS files, and directories recursively for *.eds/*.EDS files.
-
-    Exit status: 0 no errors, 1 errors found, 2 could not run.
-    """
-    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS
-
-    reports = lint_paths(paths, select, ignore, jobs)
-    if warnings_as_errors:
-        promote_warnings(reports)
-    sys.stdout.write(FORMATTERS[output_format](reports))
-    sys.stdout.flush()
-    if output_format == "text":
-        _print_summary(reports)
-    return EXIT_FINDINGS if any(has_errors(r.diagnostics) for r in reports) else EXIT_CLEAN
-
-
-def _print_summary(reports: list[FileReport]) -> None:
-    if not reports:
-        click.echo("no EDS files found", err=True)
-        return
-    counts = {s: sum(d.severity is s for r in reports for d in r.diagnostics) for s in Severity}
-    failed = sum(r.error is not None for r in reports)
-    line = (f"{len(reports)} file{'s' if len(reports) != 1 else ''}: {counts[Severity.ERROR]} errors, "
-            f"{counts[Severity.WARNING]} warnings, {counts[Severity.INFO]} notes")
-    click.echo(line + (f"; {failed} could not be checked" if failed else ""), err=True)
-
-
-@click.command("rules")
-@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def rules_command(output_format: str) -> int:
-    """List every rule: code, severity, clause, import-blocking mark (!) and summary."""
-    import json
-
-    rules = all_rules()
-    if output_format == "json":
-        click.echo(json.dumps([{"code": r.code, "severity": str(r.severity), "clause": r.clause,
-                                "import_blocking": r.import_blocking, "summary": r.summary} for r in rules],
-                              indent=2))
-        return 0
-    clause_width = max(len(r.clause) for r in rules)
-    for r in rules:
-        mark = "!" if r.import_blocking else " "
-        click.echo(f"{r.code}  {str(r.severity):7}  {r.clause:{clause_width}}  {mark} {r.summary}")
-    return 0
-

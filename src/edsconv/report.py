@@ -58,6 +58,24 @@ def all_rules() -> list[Rule]:
     return [RULES[code] for code in sorted(RULES)]
 
 
+# --- the rule listing (``edsconv rules``) -------------------------------------------
+def rules_text(rules: Sequence[Rule]) -> str:
+    """One line per rule: code, severity, clause, import-blocking mark (``!``) and summary."""
+    clause_width = max((len(r.clause) for r in rules), default=0)
+    return "".join(f"{r.code}  {str(r.severity):7}  {r.clause:{clause_width}}  {'!' if r.import_blocking else ' '} "
+                   f"{r.summary}\n" for r in rules)
+
+
+def rules_json(rules: Sequence[Rule]) -> str:
+    """The rules as a JSON list of {code, severity, clause, import_blocking, summary}."""
+    return json.dumps([{"code": r.code, "severity": str(r.severity), "clause": r.clause,
+                        "import_blocking": r.import_blocking, "summary": r.summary} for r in rules], indent=2) + "\n"
+
+
+#: ``edsconv rules --format`` choices -> the function that lists the rules in that format.
+RULE_LISTINGS = {"text": rules_text, "json": rules_json}
+
+
 def summarise(reports: Sequence[Report]) -> dict:
     diagnostics = [d for report in reports for d in report.diagnostics]
     return {

@@ -31,7 +31,7 @@ class LazyGroup(click.Group):
         "parse": "edsconv.cli.parse:parse_command",
         "lint": "edsconv.cli.lint:lint_command",
         "rules": "edsconv.cli.lint:rules_command",
-        "show": "edsconv.show:show_command",
+        "show": "edsconv.cli.show:show_command",
         "eds2xml": "edsconv.cli.convert:eds2xml_command",
         "xml2eds": "edsconv.cli.convert:xml2eds_command",
         "validate": "edsconv.cli.validate:validate_command",

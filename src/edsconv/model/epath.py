@@ -148,7 +148,7 @@ def _item_text(item: PathItem, device: Device | None) -> str:
     if item.keyword:
         return item.keyword
     text = str(item)
-    target = device.parameters.get(item.reference) if device else None
+    target = device.parameters.get(item.reference) if device and item.reference else None
     if target is not None:
         details = ", ".join(str(part) for part in (
             target.name and repr(target.name), target.default is not None and f"default {plain(target.default)}")

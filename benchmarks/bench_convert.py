@@ -18,7 +18,7 @@ from lxml import etree
 
 import edsconv
 from edsconv.xml.convert import profile_documents
-from edsconv.eds.canonical import device_to_eds
+from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
 from edsconv.model import Device
 from edsconv.xml.commnet import read_commnet_profile

@@ -14,7 +14,8 @@ from hypothesis import strategies as st
 import edsconv
 from edsconv import spec_tables as tables
 from edsconv.diff import diff
-from edsconv.eds.canonical import canonical, device_to_eds, quote, real_text, write_canonical
+from edsconv.eds.canonical import canonical, write_canonical
+from edsconv.eds.from_model import device_to_eds, quote, real_text
 from edsconv.eds.writer import write
 from edsconv.model import Device, Parameter, Scaling
 from edsconv.model.build import build

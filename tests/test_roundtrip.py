@@ -23,7 +23,7 @@ from lxml import etree
 import edsconv
 from edsconv.xml.convert import profile_documents
 from edsconv.diff import diff
-from edsconv.eds.canonical import device_to_eds
+from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
 from edsconv.model import Device, Parameter
 from edsconv.spec_tables import DATA_TYPES_BY_NAME

@@ -13,7 +13,9 @@ from click.testing import CliRunner
 
 import edsconv
 from edsconv.cli import cli
-from edsconv.show import SECTIONS, decode_path, describe, render
+from edsconv.cli.show import render
+from edsconv.describe import SECTIONS, describe
+from edsconv.model.epath import decode_path
 from edsconv.model.values import PathItem
 
 REPO = Path(__file__).resolve().parents[1]
@@ -282,7 +284,7 @@ def test_exit_codes_as_a_process(tmp_path: Path):
 
 
 def test_rich_is_imported_only_by_the_text_output():
-    code = ("import sys, edsconv.show, edsconv.cli; assert 'rich' not in sys.modules, 'rich imported'")
+    code = ("import sys, edsconv.describe, edsconv.cli.show, edsconv.cli; assert 'rich' not in sys.modules, 'rich imported'")
     assert subprocess.run([sys.executable, "-c", code], capture_output=True, timeout=60).returncode == 0
 
 

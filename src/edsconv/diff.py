@@ -9,20 +9,16 @@ keyword and by their values as written.
 
 Each :class:`Change` says what changed (``Param3 default``, ``Assem100 member 2``,
 ``Connection1 O=>T RPI``, ``identity.product_code``) with the old and new value
-spelled as in an EDS (:func:`edsconv.eds.canonical.render_value`).
+spelled as in an EDS (:func:`edsconv.eds.from_model.render_value`).
 """
 
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
-
-import click
 
 from edsconv.model import (
     Assembly,
@@ -107,7 +103,7 @@ def same(a: Any, b: Any) -> bool:
 
 def display(value: Any, type_name: str = "") -> str | None:
     """A value as it would be written in an EDS: ``0x0010``, ``"Speed"``, ``Param3``."""
-    from edsconv.eds.canonical import render_value
+    from edsconv.eds.from_model import render_value
 
     if value is None:
         return None
@@ -330,40 +326,6 @@ def format_text(changes: list[Change]) -> str:
     return "\n".join(lines)
 
 
-@click.command("diff")
-@click.argument("old_file", type=click.Path(dir_okay=False, path_type=Path))
-@click.argument("new_file", type=click.Path(dir_okay=False, path_type=Path))
-@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text",
-              help="text: changes grouped by category; json: a list of changes.")
-def diff_command(old_file: Path, new_file: Path, output_format: str) -> int:
-    """Compare two EDS files by meaning (docs/diff.md).
-
-    Exit 0 when they describe the same device, 1 when they differ, 2 when a file
-    cannot be read.
-    """
-    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
-    from edsconv.eds.reader import load
-    from edsconv.model.build import build
-
-    devices = []
-    for path in (old_file, new_file):
-        try:
-            devices.append(build(load(path)))
-        except OSError as error:
-            click.echo(f"{path}: cannot read: {error.strerror or error}", err=True)
-            return EXIT_USAGE
-    changes = diff(*devices)
-    if output_format == "json":
-        click.echo(json.dumps({"old": str(old_file), "new": str(new_file), "equal": not changes,
-                               "changes": [c.as_dict() for c in changes]}, indent=2))
-    elif changes:
-        click.echo(f"{old_file} -> {new_file}: {len(changes)} change(s)")
-        click.echo(format_text(changes))
-    else:
-        click.echo(f"{old_file} and {new_file} describe the same device")
-    return EXIT_FINDINGS if changes else EXIT_CLEAN
-
-
 def iter_categories(changes: list[Change]) -> Iterator[tuple[str, list[Change]]]:
     """(category, changes) for each category that has changes, in :data:`CATEGORIES` order."""
     for category in CATEGORIES:
@@ -372,4 +334,4 @@ def iter_categories(changes: list[Change]) -> Iterator[tuple[str, list[Change]]]
             yield category, group
 
 
-__all__ = ["CATEGORIES", "Change", "comparable", "diff", "diff_command", "display", "format_text", "same"]
+__all__ = ["CATEGORIES", "Change", "comparable", "diff", "display", "format_text", "iter_categories", "same"]

@@ -1,4 +1,4 @@
-"""``edsconv lint`` and ``edsconv rules``.
+"""Linting many EDS files: what ``edsconv lint`` runs.
 
 :func:`lint_paths` finds the EDS files below the given paths, checks each one
 (:func:`lint_file`) on every core when there are enough of them, and returns
@@ -7,7 +7,7 @@ cannot be read, or on which edsconv itself fails, gives an ``EDS000``
 diagnostic: one broken file never stops the run.
 
 Heavy imports (rich, concurrent.futures) happen inside the functions that need
-them: the command line imports this module only when ``lint`` or ``rules`` runs.
+them.
 """
 
 from __future__ import annotations
@@ -18,11 +18,9 @@ import traceback
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
-import click
-
-from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, has_errors, load_rules, rule
+from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, load_rules, rule
 from edsconv.eds.reader import load
-from edsconv.report import FORMATTERS, FileReport
+from edsconv.report import FileReport
 from edsconv.eds.syntax import EdsFile
 
 INTERNAL_ERROR = rule(
@@ -166,68 +164,3 @@ def promote_warnings(reports: Iterable[FileReport]) -> None:
         for d in report.diagnostics:
             if d.severity is Severity.WARNING:
                 d.severity = Severity.ERROR
-
-
-# --- commands -------------------------------------------------------------------------------
-def _codes(ctx: click.Context, param: click.Parameter, value: tuple[str, ...]) -> tuple[str, ...]:
-    """Comma-separated codes or prefixes, each matching at least one rule (or alias)."""
-    codes = tuple(c.strip().upper() for v in value for c in v.split(",") if c.strip())
-    if codes:
-        unknown = [c for c in codes if not load_rules().knows_prefix(c)]
-        if unknown:
-            raise click.BadParameter(f"no rule code starts with {', '.join(unknown)} (see 'edsconv rules')")
-    return codes
-
-
-@click.command("lint")
-@click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True, path_type=Path))
-@click.option("--format", "output_format", type=click.Choice(list(FORMATTERS)), default="text", show_default=True,
-              help="text: path:line:col: CODE message [clause]; json; sarif (2.1.0, for code scanning); "
-              "github (workflow annotations).")
-@click.option("--select", multiple=True, callback=_codes, metavar="CODES",
-              help="Report only these codes or code prefixes (comma-separated, e.g. EDS0,EDS101).")
-@click.option("--ignore", multiple=True, callback=_codes, metavar="CODES",
-              help="Do not report these codes or code prefixes; the longer matching prefix wins over --select.")
-@click.option("--warnings-as-errors", is_flag=True, help="Report warnings as errors, and fail on them.")
-@click.option("--jobs", "-j", type=click.IntRange(min=1), default=None,
-              help="Worker processes for many files [default: every core].")
-def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str, ...], ignore: tuple[str, ...],
-                 warnings_as_errors: bool, jobs: int | None) -> int:
-    """Check EDS files, and directories recursively for *.eds/*.EDS files.
-
-    Exit status: 0 no errors, 1 errors found, 2 could not run.
-    """
-    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS
-
-    reports = lint_paths(paths, select, ignore, jobs)
-    if warnings_as_errors:
-        promote_warnings(reports)
-    sys.stdout.write(FORMATTERS[output_format](reports))
-    sys.stdout.flush()
-    if output_format == "text":
-        _print_summary(reports)
-    return EXIT_FINDINGS if any(has_errors(r.diagnostics) for r in reports) else EXIT_CLEAN
-
-
-def _print_summary(reports: list[FileReport]) -> None:
-    if not reports:
-        click.echo("no EDS files found", err=True)
-        return
-    counts = {s: sum(d.severity is s for r in reports for d in r.diagnostics) for s in Severity}
-    failed = sum(r.error is not None for r in reports)
-    line = (f"{len(reports)} file{'s' if len(reports) != 1 else ''}: {counts[Severity.ERROR]} errors, "
-            f"{counts[Severity.WARNING]} warnings, {counts[Severity.INFO]} notes")
-    click.echo(line + (f"; {failed} could not be checked" if failed else ""), err=True)
-
-
-@click.command("rules")
-@click.argument("codes", nargs=-1, callback=_codes)
-@click.option("--format", "output_format", type=click.Choice(["text", "json", "markdown"]), default="text",
-              show_default=True, help="text: a table, or each rule's explanation when CODES are given; json: the "
-              "full records; markdown: docs/rules.md (or the sections of CODES).")
-def rules_command(codes: tuple[str, ...], output_format: str) -> int:
-    """List every rule (code, severity, clause, import-blocking mark (!) and summary), or explain CODES."""
-    from edsconv.rule_docs import format_rules
-
-    click.echo(format_rules(output_format, codes), nl=False)
-    return 0

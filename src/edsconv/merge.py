@@ -47,9 +47,6 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from pathlib import Path
-
-import click
 
 from edsconv import spec_tables as tables
 from edsconv.checks.entity_rules import MODULE_IN_MEMBER, PROXY_CONNECT_NAME_MODULE
@@ -480,47 +477,6 @@ def merge(adapter: EdsFile, modules: list[EdsFile]) -> MergeResult:
             result.merges.append(ModuleMerge(module, racks, sections))
     result.diagnostics = report.diagnostics
     return result
-
-
-# --- command line ----------------------------------------------------------------------
-
-
-@click.command("merge")
-@click.argument("adapter", type=click.Path(dir_okay=False, path_type=Path))
-@click.argument("modules", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
-@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
-              help="Write the combined entries to FILE (atomically) instead of standard output.")
-def merge_command(adapter: Path, modules: tuple[Path, ...], output: Path | None) -> int:
-    """Merge an adapter EDS with module EDS files (C.4.1.5.3).
-
-    Prints the combined Param / Enum / Assem / Connection entries as EDS text;
-    diagnostics go to standard error. Exit 1 when a module has no matching Rack
-    entry or an entry cannot be combined.
-    """
-    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
-    from edsconv.eds.reader import load
-    from edsconv.xml.common import write_atomically
-
-    models = []
-    for path in (adapter, *modules):
-        try:
-            models.append(load(path))
-        except OSError as error:
-            click.echo(f"{path}: cannot read: {error.strerror or error}", err=True)
-            return EXIT_USAGE
-    result = merge(models[0], models[1:])
-    for diagnostic in result.diagnostics:
-        click.echo(diagnostic.format(), err=True)
-    text = result.text()
-    if output is None:
-        click.echo(text, nl=False)
-    else:
-        try:
-            write_atomically(output, text.encode("utf-8"), force=True)
-        except OSError as error:
-            click.echo(f"{output}: cannot write: {error.strerror or error}", err=True)
-            return EXIT_USAGE
-    return EXIT_FINDINGS if result.has_errors else EXIT_CLEAN
 
 
 __all__ = ["FAMILIES", "MergeResult", "ModuleMerge", "matching_racks", "merge", "rack_keys"]

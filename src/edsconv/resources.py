@@ -1,4 +1,4 @@
-"""Locate the data files (grammar, schemas) shipped with edsconv.
+"""Locate the data files (grammar, schemas, docs) shipped with edsconv.
 
 In a wheel they are inside the package (see pyproject's force-include); in a
 source checkout or editable install they stand at the top of the repository.
@@ -13,7 +13,7 @@ _REPO_DIR = _PACKAGE_DIR.parent.parent
 
 
 def data_dir(name: str) -> Path:
-    """Return the directory ``grammar`` or ``schemas``, wherever it was installed."""
+    """Return the directory ``grammar``, ``schemas`` or ``docs``, wherever it was installed."""
     for candidate in (_PACKAGE_DIR / name, _REPO_DIR / name):
         if candidate.is_dir():
             return candidate

@@ -1016,10 +1016,40 @@ ETHERNETIP_CLASSIFICATION = "EtherNetIP"
 #: TCP/IP Interface object (class 0xF5, a CIP Vol2 code, not in the seed).
 ETHERNETIP_PORT_TYPE = "TCP"
 TCPIP_INTERFACE_CLASS = 0xF5
+
 # Table C.27 footnote a says the optional sections follow [Device] and
 # [Device Classification], but its normative list says [Device
 # Classification] "may be placed anywhere after the File Description section".
 # The list is kept: [Device Classification] has no fixed placement.
+
+#: CIP object classes most often named in EDS paths, by class code: how ``edsconv show`` names the
+#: class of a logical segment. Not in the 2003 text: the codes are those of the CIP object library
+#: (CIP Vol 1 ch. 5 and the network volumes); eds-pie 1.2.0's references/ethernetip_lib.json gives the
+#: same codes for the classes it lists (``class_id``: Identity 1, ..., TCP/IP Interface 245).
+CIP_CLASSES: Mapping[int, str] = MappingProxyType({
+    0x01: "Identity", 0x02: "Message Router", 0x03: "DeviceNet", 0x04: "Assembly", 0x05: "Connection",
+    0x06: "Connection Manager", 0x07: "Register", 0x08: "Discrete Input Point", 0x09: "Discrete Output Point",
+    0x0A: "Analog Input Point", 0x0B: "Analog Output Point", 0x0E: "Presence Sensing", 0x0F: "Parameter",
+    0x10: "Parameter Group", 0x12: "Group", 0x1D: "Discrete Input Group", 0x1E: "Discrete Output Group",
+    0x1F: "Discrete Group", 0x20: "Analog Input Group", 0x21: "Analog Output Group", 0x22: "Analog Group",
+    0x23: "Position Sensor", 0x24: "Position Controller Supervisor", 0x25: "Position Controller",
+    0x26: "Block Sequencer", 0x27: "Command Block", 0x28: "Motor Data", 0x29: "Control Supervisor",
+    0x2A: "AC/DC Drive", 0x2B: "Acknowledge Handler", 0x2C: "Overload", 0x2D: "Softstart", 0x2E: "Selection",
+    0x30: "S-Device Supervisor", 0x31: "S-Analog Sensor", 0x32: "S-Analog Actor", 0x33: "S-Single Stage Controller",
+    0x34: "S-Gas Calibration", 0x35: "Trip Point", 0x37: "File", 0x38: "S-Partial Pressure",
+    0x39: "Safety Supervisor", 0x3A: "Safety Validator", 0x3B: "Safety Discrete Output Point",
+    0x3C: "Safety Discrete Output Group", 0x3D: "Safety Discrete Input Point", 0x3E: "Safety Discrete Input Group",
+    0x3F: "Safety Dual Channel Output", 0x40: "S-Sensor Calibration", 0x41: "Event Log", 0x42: "Motion Axis",
+    0x43: "Time Sync", 0x44: "Modbus", 0x45: "Originator Connection List", 0x46: "Modbus Serial Link",
+    0x47: "Device Level Ring", 0x48: "QoS", 0x4D: "Energy", 0x4E: "Base Energy", 0x4F: "Electrical Energy",
+    0x50: "Non-Electrical Energy", 0x51: "Base Switch", 0x52: "SNMP", 0x53: "Power Management",
+    0x54: "RSTP Bridge", 0x55: "RSTP Port", 0x56: "PRP/HSR Protocol", 0x57: "PRP/HSR Nodes Table",
+    0x58: "Safety Feedback", 0x59: "Safety Dual Channel Feedback", 0x5A: "Safety Stop Functions",
+    0x5B: "Safety Limit Functions", 0x5C: "Power Curtailment", 0x5D: "CIP Security", 0x5E: "EtherNet/IP Security",
+    0x5F: "Certificate Management", 0x67: "PCCC", 0xF0: "ControlNet", 0xF1: "ControlNet Keeper",
+    0xF2: "ControlNet Scheduling", 0xF3: "Connection Configuration", 0xF4: "Port", 0xF5: "TCP/IP Interface",
+    0xF6: "Ethernet Link", 0xF7: "CompoNet Link", 0xF8: "CompoNet Repeater",
+})
 
 _ENTRY_INDEX: Mapping[tuple[str, str], EntrySpec] = MappingProxyType({
     (s.name, name): e for s in SECTIONS.values() for e in s.entries for name in (e.keyword, *e.aliases)

@@ -1,7 +1,8 @@
 """The typed device: the semantic model of an EDS, built by :mod:`edsconv.model.build`.
 
 :mod:`edsconv.model.device` holds the classes (re-exported here), :mod:`edsconv.model.values`
-the C.4.1.3 notation rules that turn written values into typed ones.
+the C.4.1.3 notation rules that turn written values into typed ones, :mod:`edsconv.model.epath`
+the decoder of CIP paths for people and :mod:`edsconv.model.plain` model values as JSON data.
 """
 
 from edsconv.model.device import (

@@ -1,4 +1,4 @@
-"""``edsconv eds2xml`` and ``edsconv xml2eds``: EDS <-> ISO 15745-4 XML profiles.
+"""Whole conversions, EDS <-> ISO 15745-4 XML profiles (``edsconv eds2xml`` and ``edsconv xml2eds``).
 
 eds2xml: EDS -> semantic model -> the device profile (CIP_Device_Profile.xsd)
 and the communication network profile (ENet_CommNet_Profile.xsd), or, with
@@ -13,18 +13,14 @@ next to it.
 
 from __future__ import annotations
 
-import datetime
-import sys
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-import click
 from lxml import etree
 
-from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
 from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
 from edsconv.model import Device
-from edsconv.xml.common import Header, InvalidProfile, header_element, serialise, write_atomically
+from edsconv.xml.common import Header, header_element, serialise
 
 WRAPPER_NOT_FOUND = rule(
     "XML101", Severity.ERROR, "C.2.2.1", "The EDS a wrapper profile references is not next to it",
@@ -104,61 +100,12 @@ def wrapper_documents(device: Device, header: Header, stem: str, reference: str)
     return outputs
 
 
-def _header(device: Device, fallback: str, overrides: dict) -> Header:
+def header_for(device: Device, fallback: str, overrides: dict) -> Header:
+    """The profile header derived from ``device`` (``fallback`` names it when nothing else does),
+    with the values of ``overrides`` that are not None in place of the derived ones."""
     header = Header.derive(device, fallback)
     given = {key: value for key, value in overrides.items() if value is not None}
     return replace(header, **given)
-
-
-def _print(diagnostics: list[Diagnostic]) -> None:
-    for diagnostic in diagnostics:
-        click.echo(diagnostic.format(), err=True)
-
-
-@click.command("eds2xml")
-@click.argument("eds_file", type=click.Path(dir_okay=False, path_type=Path))
-@click.option("-o", "--output-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("."),
-              show_default=True, help="Directory for the profiles.")
-@click.option("--wrapper", is_flag=True, help="Write the EDS wrapper profiles (C.2.2, C.3.2) instead.")
-@click.option("--reference", type=click.Choice(sorted(WRAPPER_REFERENCES)), default="fileinfo", show_default=True,
-              help="What a wrapper's ExternalProfileHandle names (Table C.2).")
-@click.option("--force", is_flag=True, help="Overwrite existing files.")
-@click.option("--profile-id", "identification", help="ProfileIdentification (default: VendCode-ProdType-ProdCode).")
-@click.option("--profile-revision", "revision", help="ProfileRevision (default: [File] Revision).")
-@click.option("--profile-name", "name", help="ProfileName (default: [Device] ProdName).")
-@click.option("--profile-source", "source", help="ProfileSource (default: [Device] VendName).")
-@click.option("--profile-date", "date", type=click.DateTime(["%Y-%m-%d"]),
-              help="ProfileDate YYYY-MM-DD (default: [File] ModDate, else CreateDate).")
-def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: str, force: bool,
-                    **overrides) -> int:
-    """Convert an EDS into ISO 15745-4 XML profiles (device + communication network)."""
-    from edsconv import analyse, load
-
-    try:
-        eds = load(eds_file)
-    except OSError as error:
-        click.echo(f"{eds_file}: cannot read: {error.strerror or error}", err=True)
-        return EXIT_USAGE
-    device, diagnostics = analyse(eds)
-    _print([d for d in diagnostics if d.severity is Severity.ERROR])
-    if isinstance(overrides["date"], datetime.datetime):
-        overrides["date"] = overrides["date"].date()
-    header = _header(device, eds_file.stem, overrides)
-    try:
-        outputs = (wrapper_documents(device, header, eds_file.stem, WRAPPER_REFERENCES[reference]) if wrapper
-                   else profile_documents(device, header, eds_file.stem))
-    except InvalidProfile as error:
-        click.echo(f"{eds_file}: internal error, nothing written: {error}", err=True)
-        return EXIT_USAGE
-    targets = [output_dir / output.name for output in outputs]
-    existing = [str(t) for t in targets if t.exists()]
-    if existing and not force:
-        click.echo(f"not overwriting {', '.join(existing)} (use --force)", err=True)
-        return EXIT_USAGE
-    for target, output in zip(targets, outputs):
-        write_atomically(target, output.data, force=True)
-        click.echo(str(target))
-    return EXIT_FINDINGS if has_errors(diagnostics) else EXIT_CLEAN
 
 
 # --- xml2eds -----------------------------------------------------------------------------
@@ -231,34 +178,3 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
                                              "device, network or EDS wrapper profile", 1, 1, str(path)))
             return None, diagnostics
     return device, diagnostics
-
-
-@click.command("xml2eds")
-@click.argument("profiles", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
-@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
-              help="EDS file to write (default: standard output).")
-@click.option("--force", is_flag=True, help="Overwrite an existing output file.")
-def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool) -> int:
-    """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS."""
-    from edsconv.eds.canonical import device_to_eds
-    from edsconv.eds.writer import write
-
-    missing = [str(p) for p in profiles if not p.is_file()]
-    if missing:
-        click.echo(f"cannot read: {', '.join(missing)}", err=True)
-        return EXIT_USAGE
-    device, diagnostics = device_from_profiles(list(profiles))
-    _print(diagnostics)
-    if device is None:
-        return EXIT_FINDINGS
-    text = write(device_to_eds(device), newline="\r\n" if output else "\n")
-    if output is None:
-        sys.stdout.write(text)
-        return EXIT_FINDINGS if has_errors(diagnostics) else EXIT_CLEAN
-    try:
-        write_atomically(output, text.encode("utf-8"), force=force)
-    except FileExistsError as error:
-        click.echo(str(error), err=True)
-        return EXIT_USAGE
-    click.echo(str(output))
-    return EXIT_FINDINGS if has_errors(diagnostics) else EXIT_CLEAN

@@ -1,4 +1,4 @@
-"""``edsconv validate``: check ISO 15745-4 XML profiles against the restored schemas.
+"""Validation of ISO 15745-4 XML profiles against the restored schemas (``edsconv validate``).
 
 The profile kind is read from the header (ProfileClassID and
 ISO15745Reference/ProfileTechnology) and picks the schema; ``--schema`` forces
@@ -8,16 +8,13 @@ message ends with the XPath of the offending element.
 
 from __future__ import annotations
 
-import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import click
 from lxml import etree
 
-from edsconv.diagnostics import Diagnostic, Severity, block, has_errors, rule
-from edsconv.report import format_json
+from edsconv.diagnostics import Diagnostic, Severity, block, rule
 from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
 from edsconv.xml.safe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
 
@@ -210,31 +207,5 @@ def _schema_diagnostics(document: XmlDocument, report: FileReport) -> Iterable[D
         yield diagnostic
 
 
-_SCHEMA_CHOICES = [kind.name for kind in PROFILE_KINDS if kind.xsd] + [kind.xsd for kind in PROFILE_KINDS if kind.xsd]
-
-
-@click.command("validate")
-@click.argument("files", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option("--schema", "schema_name", type=click.Choice(_SCHEMA_CHOICES),
-              help="Validate against this profile kind or schema file instead of the one the header names.")
-@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def validate_command(files: tuple[Path, ...], schema_name: str | None, output_format: str) -> int:
-    """Validate ISO 15745-4 XML profiles (EtherNet/IP, EDS wrappers, ADS-net, FL-net) against their schemas."""
-    # cli.py imports this module to register the command, so its names are imported at call time.
-    from edsconv.cli import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE
-
-    forced = kind_named(schema_name) if schema_name else None
-    reports = []
-    for path in files:
-        try:
-            reports.append(validate_file(path, forced))
-        except OSError as error:
-            click.echo(f"{path}: cannot read: {error.strerror or error}", err=True)
-            return EXIT_USAGE
-    if output_format == "json":
-        sys.stdout.write(format_json(reports))
-    else:
-        for report in reports:
-            for diagnostic in report.diagnostics:
-                click.echo(diagnostic.format())
-    return EXIT_FINDINGS if any(has_errors(r.diagnostics) for r in reports) else EXIT_CLEAN
+#: The names ``--schema`` accepts: a profile kind or the file name of its schema.
+SCHEMA_CHOICES = [kind.name for kind in PROFILE_KINDS if kind.xsd] + [kind.xsd for kind in PROFILE_KINDS if kind.xsd]

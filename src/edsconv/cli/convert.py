@@ -1,0 +1,116 @@
+"""``edsconv eds2xml`` and ``edsconv xml2eds``: EDS <-> ISO 15745-4 XML profiles.
+
+Every document is validated before anything is written, and files are written atomically:
+an invalid document is an internal error, never a file on disk.
+"""
+
+from __future__ import annotations
+
+import datetime
+import sys
+from pathlib import Path
+from typing import Any
+
+import click
+
+from edsconv.cli.common import (
+    EXIT_FINDINGS,
+    CannotRun,
+    documentation,
+    echo_diagnostics,
+    exit_status,
+    read_eds,
+    reading,
+    writing,
+)
+from edsconv.diagnostics import Severity
+from edsconv.model import Device
+from edsconv.xml.common import Header, InvalidProfile, write_atomically
+from edsconv.xml.convert import (
+    WRAPPER_REFERENCES,
+    Output,
+    device_from_profiles,
+    header_for,
+    profile_documents,
+    wrapper_documents,
+)
+
+
+@click.command("eds2xml", epilog=documentation("mapping.md"))
+@click.argument("eds_file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("-o", "--output-dir", type=click.Path(file_okay=False, path_type=Path), default=Path("."),
+              show_default=True, help="Directory for the profiles.")
+@click.option("--wrapper", is_flag=True, help="Write the EDS wrapper profiles (C.2.2, C.3.2) instead.")
+@click.option("--reference", type=click.Choice(sorted(WRAPPER_REFERENCES)), default="fileinfo", show_default=True,
+              help="What a wrapper's ExternalProfileHandle names (Table C.2).")
+@click.option("--force", is_flag=True, help="Overwrite existing files.")
+@click.option("--profile-id", "identification", help="ProfileIdentification (default: VendCode-ProdType-ProdCode).")
+@click.option("--profile-revision", "revision", help="ProfileRevision (default: [File] Revision).")
+@click.option("--profile-name", "name", help="ProfileName (default: [Device] ProdName).")
+@click.option("--profile-source", "source", help="ProfileSource (default: [Device] VendName).")
+@click.option("--profile-date", "date", type=click.DateTime(["%Y-%m-%d"]),
+              help="ProfileDate YYYY-MM-DD (default: [File] ModDate, else CreateDate).")
+def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: str, force: bool,
+                    **overrides: Any) -> int:
+    """Convert an EDS into ISO 15745-4 XML profiles (device + communication network)."""
+    from edsconv import analyse
+
+    device, diagnostics = analyse(read_eds(eds_file))
+    echo_diagnostics((d for d in diagnostics if d.severity is Severity.ERROR), err=True)
+    if isinstance(overrides["date"], datetime.datetime):
+        overrides["date"] = overrides["date"].date()
+    header = header_for(device, eds_file.stem, overrides)
+    outputs = _documents(eds_file, device, header, WRAPPER_REFERENCES[reference] if wrapper else None)
+    for target in _write_all(output_dir, outputs, force):
+        click.echo(str(target))
+    return exit_status(diagnostics)
+
+
+def _documents(eds_file: Path, device: Device, header: Header, wrapper_reference: str | None) -> list[Output]:
+    """The profiles (or, with a wrapper reference, the wrapper profiles) of ``device``, validated."""
+    try:
+        if wrapper_reference is not None:
+            return wrapper_documents(device, header, eds_file.stem, wrapper_reference)
+        return profile_documents(device, header, eds_file.stem)
+    except InvalidProfile as error:
+        raise CannotRun(f"{eds_file}: internal error, nothing written: {error}") from error
+
+
+def _write_all(output_dir: Path, outputs: list[Output], force: bool) -> list[Path]:
+    """Write every document, or none when one exists and ``force`` is not given."""
+    targets = [output_dir / output.name for output in outputs]
+    existing = [str(t) for t in targets if t.exists()]
+    if existing and not force:
+        raise CannotRun(f"not overwriting {', '.join(existing)} (use --force)")
+    for target, output in zip(targets, outputs, strict=True):
+        with writing(target):
+            write_atomically(target, output.data, force=True)
+    return targets
+
+
+@click.command("xml2eds", epilog=documentation("mapping.md"))
+@click.argument("profiles", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
+@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
+              help="EDS file to write (default: standard output).")
+@click.option("--force", is_flag=True, help="Overwrite an existing output file.")
+def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool) -> int:
+    """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS."""
+    from edsconv.eds.from_model import device_to_eds
+    from edsconv.eds.writer import write
+
+    missing = [str(p) for p in profiles if not p.is_file()]
+    if missing:
+        raise CannotRun(f"cannot read: {', '.join(missing)}")
+    with reading():
+        device, diagnostics = device_from_profiles(list(profiles))
+    echo_diagnostics(diagnostics, err=True)
+    if device is None:
+        return EXIT_FINDINGS
+    text = write(device_to_eds(device), newline="\r\n" if output else "\n")
+    if output is None:
+        sys.stdout.write(text)
+    else:
+        with writing(output):
+            write_atomically(output, text.encode("utf-8"), force=force)
+        click.echo(str(output))
+    return exit_status(diagnostics)

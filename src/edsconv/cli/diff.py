@@ -1,0 +1,35 @@
+"""``edsconv diff``: compare two EDS files by meaning."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, documentation, read_eds
+from edsconv.diff import diff, format_text
+from edsconv.model.build import build
+
+
+@click.command("diff", epilog=documentation("diff.md"))
+@click.argument("old_file", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("new_file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text",
+              help="text: changes grouped by category; json: a list of changes.")
+def diff_command(old_file: Path, new_file: Path, output_format: str) -> int:
+    """Compare two EDS files by meaning.
+
+    Exit 0 when they describe the same device, 1 when they differ, 2 when a file
+    cannot be read.
+    """
+    changes = diff(build(read_eds(old_file)), build(read_eds(new_file)))
+    if output_format == "json":
+        click.echo(json.dumps({"old": str(old_file), "new": str(new_file), "equal": not changes,
+                               "changes": [c.as_dict() for c in changes]}, indent=2))
+    elif changes:
+        click.echo(f"{old_file} -> {new_file}: {len(changes)} change(s)")
+        click.echo(format_text(changes))
+    else:
+        click.echo(f"{old_file} and {new_file} describe the same device")
+    return EXIT_FINDINGS if changes else EXIT_CLEAN

@@ -1,0 +1,427 @@
+"""``edsconv show``: the :func:`~edsconv.describe.describe` document as tables for people (rich), or as
+JSON for programs.
+
+The text is rendered part by part (identity, parameters, groups, assemblies, connections, ports,
+modular, other), one function each, from the same document the JSON output prints. rich is
+imported only when the text output is rendered.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import click
+
+from edsconv import analyse
+from edsconv.cli.common import EXIT_CLEAN, counts_line, documentation, read_eds, split_list
+from edsconv.describe import SECTIONS, describe, select
+from edsconv.diagnostics import Severity
+
+if TYPE_CHECKING:
+    from rich.console import Console
+    from rich.table import Table
+
+#: a label and its value in a two-column table
+Row = tuple[str, Any]
+
+
+# --- command ------------------------------------------------------------------------------------
+
+
+def _section_names(ctx: click.Context, param: click.Parameter, value: tuple[str, ...]) -> tuple[str, ...]:
+    names = tuple(name.lower() for name in split_list(value))
+    unknown = [name for name in names if name not in SECTIONS]
+    if unknown:
+        raise click.BadParameter(f"{', '.join(unknown)}: choose from {', '.join(SECTIONS)}")
+    return tuple(dict.fromkeys(names))
+
+
+@click.command("show", epilog=documentation("show.md"))
+@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--section", "sections", multiple=True, callback=_section_names, metavar="NAME",
+              help=f"Show only these parts (repeat or comma-separate): {', '.join(SECTIONS)}.")
+@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True,
+              help="text: tables for people; json: the same content for programs.")
+def show_command(file: Path, sections: tuple[str, ...], output_format: str) -> int:
+    """Show what an EDS says about a device: identity, parameters, assemblies, connections, ports, modules.
+
+    Exit 0 whenever the file could be read, even when it has errors: their count goes to
+    standard error and 'edsconv lint' lists them. Exit 2 when the file cannot be read.
+    """
+    device, diagnostics = analyse(read_eds(file))
+    document = select(describe(device), sections)
+    if output_format == "json":
+        click.echo(json.dumps(document, indent=2, ensure_ascii=False))
+    else:
+        print_text(document, sections)
+    if any(d.severity >= Severity.WARNING for d in diagnostics):
+        click.echo(counts_line(str(file), diagnostics, notes=False) + f" (see 'edsconv lint {file}')", err=True)
+    return EXIT_CLEAN
+
+
+def print_text(document: dict, sections: tuple[str, ...]) -> None:
+    """The tables on a terminal; piped, plain text of 120 columns without trailing blanks."""
+    from rich.console import Console
+
+    if sys.stdout.isatty():
+        render(document, Console(markup=False, highlight=False, emoji=False), sections)
+        return
+    console = Console(markup=False, highlight=False, emoji=False, no_color=True, width=120, color_system=None)
+    with console.capture() as capture:
+        render(document, console, sections)
+    click.echo("\n".join(line.rstrip() for line in capture.get().splitlines()))
+
+
+# --- text of values -----------------------------------------------------------------------------
+
+
+def _text(value: Any) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, float):
+        return f"{value:g}"
+    return str(value)
+
+
+def _range(low: Any, high: Any) -> str:
+    if low is None and high is None:
+        return ""
+    return f"{_text(low)} .. {_text(high)}"
+
+
+def _joined(*parts: Any) -> str:
+    return " ".join(_text(part) for part in parts if part not in (None, ""))
+
+
+def _revision(major: Any, minor: Any) -> str:
+    return "" if major is None and minor is None else f"{_text(major) or '?'}.{_text(minor) or '?'}"
+
+
+def _reference_text(ref: dict | None) -> str:
+    """One line for a resolved reference (rpi/size/format, group member, assembly member)."""
+    if ref is None:
+        return ""
+    kind = ref.get("kind")
+    keyword = ref.get("keyword", "")
+    bit = f" bit {ref['bit']}" if ref.get("bit") is not None else ""
+    if kind == "parameter":
+        name = f" {ref['name']!r}" if ref.get("name") else ""
+        units = f" {ref['units']}" if ref.get("units") else ""
+        return (f"{keyword}{bit}{name}: default {_text(ref['default'])}{units}, range "
+                f"{_range(ref['minimum'], ref['maximum'])}")
+    if kind == "assembly":
+        name = f" {ref['name']!r}" if ref.get("name") else ""
+        size = f", {ref['size']} bytes" if ref.get("size") is not None else ""
+        bits = f", members {ref['total_bits']} bits" if ref.get("total_bits") is not None else ""
+        return f"{keyword}{name}{size}{bits}"
+    if kind == "undefined":
+        return f"{keyword} (undefined)"
+    return f"{keyword}{bit}"
+
+
+def _value_text(value: dict | None, unit: str = "") -> str:
+    if value is None:
+        return ""
+    if "reference" in value:
+        return _reference_text(value["reference"])
+    return f"{_text(value['value'])}{unit}"
+
+
+def _format_text(value: dict | None) -> str:
+    if value is None:
+        return ""
+    return _text(value["written"]) if value.get("kind") == "value" else _reference_text(value)
+
+
+def _member_text(member: dict) -> str:
+    kind = member["kind"]
+    if kind == "pad":
+        return "(pad)"
+    if kind == "constant":
+        return f"constant {member['value']} (0x{member['value']:X})"
+    if kind == "keyword":
+        return member["keyword"]
+    if kind == "path":
+        return f"path {member['path']['text']} ({member['path']['summary']})"
+    if kind == "parameter":
+        name = f" {member['name']!r}" if member.get("name") else ""
+        bit = f" bit {member['bit']}" if member.get("bit") is not None else ""
+        return f"{member['keyword']}{bit}{name} ({member['data_type'] or '?'})"
+    return _reference_text(member)
+
+
+def _path_text(path: dict | None) -> str:
+    if not path:
+        return ""
+    return f"{path['text']}\n  = {path['summary']}" if path["summary"] and path["summary"] != path["text"] else \
+        path["text"]
+
+
+def _title(keyword: str, name: Any) -> str:
+    return f"{keyword}  {name!r}" if name else keyword
+
+
+# --- the page -----------------------------------------------------------------------------------
+
+
+class _Page:
+    """Headings and tables printed on a rich console, a blank line between parts."""
+
+    def __init__(self, console: Console) -> None:
+        self.console = console
+        self.first = True
+
+    def heading(self, text: str) -> None:
+        from rich.text import Text
+
+        if not self.first:
+            self.console.print()
+        self.first = False
+        self.console.print(Text(text, style="bold underline"))
+
+    def table(self, *columns: str, **options: Any) -> Table:
+        from rich import box
+        from rich.table import Table
+
+        t = Table(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False, header_style="bold", **options)
+        for column in columns:
+            t.add_column(column, overflow="fold")
+        return t
+
+    def pairs(self, rows: list[Row]) -> Table:
+        """Label / value rows; rows without a value are left out."""
+        t = self.table(show_header=False)
+        t.add_column(style="bold", no_wrap=True)
+        t.add_column(overflow="fold")
+        for label, value in rows:
+            if value not in (None, "", []):
+                t.add_row(label, _text(value))
+        if not t.rows:
+            t.add_row("(nothing given)", "")
+        return t
+
+    def print(self, table: Table) -> None:
+        self.console.print(table)
+
+
+# --- the parts ----------------------------------------------------------------------------------
+
+
+def _identity(page: _Page, document: dict) -> None:
+    page.heading("Identity")
+    page.print(page.pairs(_identity_rows(document)))
+    pc = document["param_class"]
+    if pc:
+        page.heading("Parameter class")
+        page.print(page.pairs([("Max instances", pc["max_instances"]),
+                               ("Descriptor", f"{pc['descriptor']} {', '.join(pc['flags'])}"),
+                               ("Config assembly", pc["cfg_assembly"])]))
+
+
+def _identity_rows(document: dict) -> list[Row]:
+    identity, file = document["identity"], document["file"]
+    return [
+        ("Product", identity["product_name"]),
+        ("Vendor", _joined(identity["vendor_code"], identity["vendor_name"])),
+        ("Product type", _joined(identity["product_type"], identity["product_type_string"])),
+        ("Product code", identity["product_code"]),
+        ("Revision", _revision(identity["major_revision"], identity["minor_revision"])),
+        ("Catalog", identity["catalog"]),
+        ("Icon", identity["icon"]),
+        ("Networks", ", ".join(
+            " ".join([c["classification"] or "?", *c["subclassifications"]]) for c in document["classifications"])),
+        ("Description", file["description"]),
+        ("File revision", file["revision"]),
+        ("Created", " ".join(filter(None, (file["create_date"], file["create_time"])))),
+        ("Modified", " ".join(filter(None, (file["mod_date"], file["mod_time"])))),
+        ("Home URL", file["home_url"]),
+    ]
+
+
+def _parameters(page: _Page, document: dict) -> None:
+    if not document["parameters"]:
+        return
+    page.heading("Parameters")
+    t = page.table("Keyword", "Name", "Type", "Range", "Default", "Units", "Details")
+    for column in (0, 2, 3, 4):
+        t.columns[column].no_wrap = True
+    for p in document["parameters"]:
+        t.add_row(p["keyword"], _text(p["name"]), _type_text(p), _range(p["minimum"], p["maximum"]),
+                  _text(p["default"]), _text(p["units"]), "\n".join(_parameter_details(p)))
+    page.print(t)
+
+
+def _type_text(parameter: dict) -> str:
+    data_type = parameter["data_type"]
+    text = data_type["name"] or f"? ({_text(data_type['written'])})"
+    if data_type["code"] is not None:
+        text += f" 0x{data_type['code']:02X}"
+    if parameter["size"] is not None:
+        text += f", {parameter['size']} B"
+    return text
+
+
+def _parameter_details(p: dict) -> list[str]:
+    details = []
+    engineering = p.get("engineering")
+    if engineering:
+        details.append(f"scaled: {_range(engineering['minimum'], engineering['maximum'])}, "
+                       f"default {_text(engineering['default'])}")
+    details += [f"{e['value']} = {e['text']}" for e in p["enum"]]
+    if p["flags"]:
+        details.append("flags: " + ", ".join(p["flags"]))
+    if p.get("link_path"):
+        details.append(f"link path {p['link_path']['text']} ({p['link_path']['summary']})")
+    if p["help"]:
+        details.append(p["help"])
+    return details
+
+
+def _groups(page: _Page, document: dict) -> None:
+    if not document["groups"]:
+        return
+    page.heading("Groups")
+    t = page.table("Group", "Name", "Members")
+    for g in document["groups"]:
+        t.add_row(str(g["number"]), _text(g["name"]),
+                  "\n".join(f"{m['keyword']} {m.get('name') or ''}".strip() for m in g["members"]))
+    page.print(t)
+
+
+def _assemblies(page: _Page, document: dict) -> None:
+    for a in document["assemblies"]:
+        size = f", {a['size']} bytes" if a["size"] is not None else ""
+        path = f", path {a['path']['text']} ({a['path']['summary']})" if a["path"] else ""
+        page.heading(f"{_title(a['keyword'], a['name'])}{size}{path}")
+        t = page.table("Bits", "Size", "Member")
+        for m in a["members"]:
+            bits = m["bits"]
+            t.add_row(_bit_range(m["offset"], bits), "?" if bits is None else str(bits), _member_text(m["member"]))
+        if a["module_member_list"]:
+            t.add_row("", "", "the members of the module (ModuleMemberList)")
+        elif not a["members"]:
+            t.add_row("", "", "(no members listed)")
+        if a["members"]:
+            t.add_row("", _text(a["total_bits"]) if a["total_bits"] is not None else "?", "total bits")
+        page.print(t)
+
+
+def _bit_range(offset: int | None, bits: int | None) -> str:
+    if offset is None or bits is None:
+        return "?"
+    return f"{offset}" if bits <= 1 else f"{offset}-{offset + bits - 1}"
+
+
+def _connections(page: _Page, document: dict) -> None:
+    for c in document["connections"]:
+        rows = _trigger_rows(c["trigger_transport"])
+        parameters = c["parameters"]
+        if parameters:
+            rows += [("Connection parameters", parameters["value"]),
+                     ("  reserved bits set", parameters.get("reserved_bits"))]
+        for direction in ("O=>T", "T=>O"):
+            rows += _direction_rows(c[direction], parameters, direction)
+        for part in ("config1", "config2"):
+            endpoint = c[part]
+            if endpoint:
+                rows += [(f"Config part {part[-1]}", " "),
+                         ("  size", _value_text(endpoint["size"], " bytes")),
+                         ("  format", _format_text(endpoint["format"]))]
+        rows += [("Path", _path_text(c["path"])), ("Help", c["help"])]
+        page.heading(_title(c["keyword"], c["name"]))
+        page.print(page.pairs(rows))
+
+
+def _trigger_rows(tt: dict | None) -> list[Row]:
+    if not tt:
+        return []
+    rows: list[Row] = [("Trigger/transport", tt["value"])]
+    if "classes" in tt:
+        rows += [("  class", ", ".join(tt["class_names"]) or "none"),
+                 ("  trigger", ", ".join(tt["triggers"]) or "none"),
+                 ("  transport type", ", ".join(tt["transport"]) or "none"),
+                 ("  role", tt["role"]),
+                 ("  reserved bits set", tt["reserved_bits"])]
+    return rows
+
+
+def _direction_rows(endpoint: dict | None, parameters: dict | None, direction: str) -> list[Row]:
+    """One direction of a connection: its RPI, size and format, and its half of the connection parameters."""
+    rows: list[Row] = [(direction, "(not given)" if endpoint is None else " ")]
+    if endpoint:
+        rows += [("  RPI", _value_text(endpoint["rpi"], " µs")),
+                 ("  size", _value_text(endpoint["size"], " bytes")),
+                 ("  format", _format_text(endpoint["format"]))]
+    if parameters and direction in parameters:
+        d = parameters[direction]
+        sizes = [s for s, on in (("fixed", d["fixed_size"]), ("variable", d["variable_size"])) if on]
+        rows += [("  size type", " and ".join(sizes) or "none"),
+                 ("  real-time format", d["real_time_format"]),
+                 ("  connection type", ", ".join(d["connection_types"]) or "none"),
+                 ("  priority", ", ".join(d["priorities"]) or "none")]
+    return rows
+
+
+def _ports(page: _Page, document: dict) -> None:
+    if not document["ports"]:
+        return
+    page.heading("Ports")
+    t = page.table("Port", "Type", "Name", "Port number", "Object path")
+    for p in document["ports"]:
+        t.add_row(str(p["number"]), _text(p["type"]), _text(p["name"]), _text(p["port_number"]),
+                  _path_text(p["object_path"]))
+    page.print(t)
+
+
+def _modular(page: _Page, document: dict) -> None:
+    m = document["modular"]
+    if not m:
+        return
+    page.heading(f"Modular ({m['role'] or 'unknown role'})")
+    page.print(page.pairs([
+        ("Slots in rack", m["define_slots_in_rack"]),
+        ("Slot display rule", _reference_text(m["slot_display_rule"])),
+        ("Width (slots)", m["width"]),
+        ("External ID", m["external_id"]),
+        ("Generic ID", m["generic_id"]),
+        ("ExternID exact match", m["extern_id_exact_match"]),
+        ("Query", m["query"] and f"path {_path_text(m['query']['path'])}, service {m['query']['service']}, "
+                                 f"ID size {_text(m['query']['id_size'])}, empty slot ID "
+                                 f"{_text(m['query']['empty_slot_id'])}"),
+    ]))
+    if m["racks"]:
+        page.heading("Racks")
+        t = page.table("Rack", "Vendor", "Type", "Product", "Revision", "Legal slots")
+        for r in m["racks"]:
+            t.add_row(str(r["number"]), _text(r["vendor_code"]), _text(r["product_type"]),
+                      _text(r["product_code"]), _revision(r["major_revision"], r["minor_revision"]),
+                      ", ".join(map(str, r["legal_slots"])))
+        page.print(t)
+
+
+def _other(page: _Page, document: dict) -> None:
+    if not (document["other_sections"] or document["extra_entries"]):
+        return
+    page.heading("Other sections and entries")
+    t = page.table("Section", "Entries")
+    for s in document["other_sections"]:
+        t.add_row(f"[{s['name']}]", str(s["entries"]))
+    for section, keywords in document["extra_entries"].items():
+        t.add_row(f"[{section}] (not in the 2003 text)", ", ".join(keywords))
+    page.print(t)
+
+
+#: The parts of the text, in the order they are printed, by their ``--section`` name.
+_PARTS = {"identity": _identity, "parameters": _parameters, "groups": _groups, "assemblies": _assemblies,
+          "connections": _connections, "ports": _ports, "modular": _modular, "other": _other}
+
+
+def render(document: dict, console: Console, sections: tuple[str, ...] = ()) -> None:
+    """Print the :func:`~edsconv.describe.describe` document as rich tables on ``console``."""
+    page = _Page(console)
+    for name, part in _PARTS.items():
+        if name in (sections or SECTIONS):
+            part(page, document)

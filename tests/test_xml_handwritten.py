@@ -19,7 +19,7 @@ import xmlschema
 
 import edsconv
 from edsconv.diagnostics import Severity
-from edsconv.eds.canonical import device_to_eds
+from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.syntax import EdsFile, String
 from edsconv.eds.writer import write
 from edsconv.resources import data_dir

@@ -8,9 +8,8 @@ import collections
 import pytest
 
 import edsconv
-from edsconv.diagnostics import load_rules
-
 from conftest import REPO, SHARED_REAL
+from edsconv.diagnostics import load_rules
 
 MARK = "$ HERE"
 PARAM_RPI = 'Param1 = 0,,,0x0000,0xC8,4,"RPI","us","",1000,1000000,10000;'

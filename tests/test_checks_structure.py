@@ -13,9 +13,8 @@ import collections
 import pytest
 
 import edsconv
-from edsconv.diagnostics import Severity, load_rules
-
 from conftest import REPO, SHARED_REAL
+from edsconv.diagnostics import Severity, load_rules
 
 #: The smallest EDS these checks accept: Tables C.6, C.8 and C.27, nothing optional.
 MINIMAL = {

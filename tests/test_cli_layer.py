@@ -9,9 +9,8 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from edsconv.cli import LazyGroup, cli
-
 from conftest import REPO
+from edsconv.cli import LazyGroup, cli
 
 SRC = REPO / "src" / "edsconv"
 CLI = SRC / "cli"

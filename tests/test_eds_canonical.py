@@ -10,18 +10,18 @@ from pathlib import Path
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from tests.conftest import REPO, SHARED_REAL
 
 import edsconv
 from edsconv import spec_tables as tables
 from edsconv.diff import diff
 from edsconv.eds.canonical import canonical, write_canonical
 from edsconv.eds.from_model import device_to_eds, quote, real_text
+from edsconv.eds.syntax import Scalar
 from edsconv.eds.writer import write
 from edsconv.model import Device, Parameter, Scaling
 from edsconv.model.build import build
-from edsconv.eds.syntax import Scalar
 from edsconv.model.values import PathItem, StringIMember, to_real
-from tests.conftest import REPO, SHARED_REAL
 
 #: corpus/shall and corpus/allowed are one base file changed in one place each (test_shall_probes.py reads them).
 CORPUS = sorted(p for p in (REPO / "corpus").rglob("*")

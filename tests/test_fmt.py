@@ -6,11 +6,11 @@ import os
 from pathlib import Path
 
 from click.testing import CliRunner
+from tests.conftest import REPO
 
 import edsconv
 from edsconv.cli import cli
 from edsconv.eds.canonical import canonical, write_canonical
-from tests.conftest import REPO
 
 MESSY = """[Device]
 VendCode = 1; $ vendor

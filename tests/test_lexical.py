@@ -5,10 +5,8 @@ from __future__ import annotations
 import pytest
 
 import edsconv
-from edsconv.eds.syntax import Group, Scalar, String, ValueKind, stringi_members
-
 from conftest import codes, parse_ok, values
-
+from edsconv.eds.syntax import Group, Scalar, String, ValueKind, stringi_members
 
 # --- C.4.1.2.2.5 / .6 sections -------------------------------------------------------------
 

@@ -11,10 +11,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from conftest import REPO, SHARED_REAL
 from edsconv import lint
 from edsconv.cli import cli
-
-from conftest import REPO, SHARED_REAL
 from test_report import validate_sarif
 
 GOOD = (REPO / "corpus" / "examples" / "io_adapter.eds").read_bytes()

@@ -6,11 +6,11 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from tests.conftest import REPO
 
 import edsconv
 from edsconv.cli import cli
 from edsconv.merge import matching_racks, merge, rack_keys
-from tests.conftest import REPO
 
 MODULAR = REPO / "corpus" / "modular"
 ADAPTER = MODULAR / "adapter.eds"

@@ -9,8 +9,8 @@ from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 import edsconv
-from edsconv.eds.writer import write
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, ValueKind
+from edsconv.eds.writer import write
 
 SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 

@@ -7,10 +7,9 @@ import codecs
 import pytest
 
 import edsconv
+from conftest import codes, parse_ok
 from edsconv.eds.source import encode
 from edsconv.eds.writer import write
-
-from conftest import codes, parse_ok
 
 # --- bytes and encodings (C.4.1.3.2) -----------------------------------------------------------
 

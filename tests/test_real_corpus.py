@@ -7,10 +7,9 @@ import functools
 import pytest
 
 import edsconv
-from edsconv.eds.writer import write
-from edsconv.eds.syntax import EdsFile
-
 from conftest import SHARED_REAL
+from edsconv.eds.syntax import EdsFile
+from edsconv.eds.writer import write
 
 pytestmark = [
     pytest.mark.real_corpus,

@@ -6,11 +6,10 @@ import json
 import re
 from pathlib import Path
 
+from conftest import REPO
 from edsconv import report, rule_docs
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.report import FileReport
-
-from conftest import REPO
 
 
 def diagnostic(code: str, message: str, line: int, column: int, severity: Severity, path: str) -> Diagnostic:

@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 import edsconv
-from edsconv.xml.convert import profile_documents
+from conftest import REPO, SHARED_REAL
 from edsconv.diff import diff
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
@@ -29,8 +29,7 @@ from edsconv.model import Device, Parameter
 from edsconv.spec_tables import DATA_TYPES_BY_NAME
 from edsconv.xml.commnet import read_commnet_profile
 from edsconv.xml.common import Header
-
-from conftest import REPO, SHARED_REAL
+from edsconv.xml.convert import profile_documents
 
 #: corpus/shall and corpus/allowed are one base file changed in one place each (test_shall_probes.py reads them).
 OWN = sorted(p for p in (REPO / "corpus").rglob("*")

@@ -15,6 +15,7 @@ from click.testing import CliRunner
 from lxml import etree
 
 import edsconv
+from conftest import REPO
 from edsconv.cli import cli
 from edsconv.diagnostics import load_rules
 from edsconv.model import Device
@@ -24,8 +25,6 @@ from edsconv.xml.common import EDSCONV
 from edsconv.xml.convert import device_from_profiles
 from edsconv.xml.device import read_device_profile
 from edsconv.xml.safe import parse_xml, read_xml
-
-from conftest import REPO
 
 TESTS = Path(__file__).resolve().parent
 

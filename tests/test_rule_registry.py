@@ -11,12 +11,11 @@ import pytest
 from click.testing import CliRunner
 
 import edsconv
+from conftest import REPO, SHARED_REAL
 from edsconv import checks, lint, rule_docs
 from edsconv.checks import Check, load_checks
 from edsconv.cli import cli
 from edsconv.diagnostics import EVERYTHING, Rule, Selection, load_rules
-
-from conftest import REPO, SHARED_REAL
 
 #: Triggers EDS313 (a ProxyConnect named Module, checks/entities) and EDS201 (no [Device], checks/structure).
 PROXY_CONNECT_NAMED_MODULE = """\

@@ -8,10 +8,9 @@ import math
 import pytest
 
 import edsconv
+from conftest import REPO
 from edsconv.model import MODULE, Reference
 from edsconv.model.values import PathItem, Revision
-
-from conftest import REPO
 
 EXAMPLE = REPO / "corpus" / "examples" / "io_adapter.eds"
 

@@ -16,10 +16,9 @@ from pathlib import Path
 import pytest
 
 import edsconv
+from conftest import REPO
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.report import all_rules
-
-from conftest import REPO
 
 SHALL, ALLOWED = REPO / "corpus" / "shall", REPO / "corpus" / "allowed"
 #: Expected codes no rule registers yet are written "NEW <suggested name>".

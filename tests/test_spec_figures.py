@@ -16,8 +16,8 @@ import pytest
 
 import edsconv
 from edsconv.diagnostics import Severity
-from edsconv.eds.writer import write
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, String, StringIMember, stringi_members
+from edsconv.eds.writer import write
 
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "corpus" / "spec"

@@ -98,7 +98,7 @@ def test_param_has_the_24_fields_of_table_c13():
     assert param.required_count == 12
     assert param.fields[0].choices == (0,)
     assert param.fields[3].bits == "C.15"
-    assert T.NUMERIC_ONLY_PARAM_FIELDS == frozenset(range(13, 22))
+    assert frozenset(range(13, 22)) == T.NUMERIC_ONLY_PARAM_FIELDS
     assert all(f.table == "C.13" for f in param.fields)
 
 

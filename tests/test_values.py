@@ -13,6 +13,7 @@ import math
 import pytest
 from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
+from tests.conftest import values
 
 from edsconv import spec_tables as tables
 from edsconv.model.values import (
@@ -29,7 +30,6 @@ from edsconv.model.values import (
     to_stringi,
     to_time,
 )
-from tests.conftest import values
 
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 

@@ -9,12 +9,11 @@ import pytest
 from lxml import etree
 
 import edsconv
+from conftest import REPO, SHARED_REAL
 from edsconv.model import MODULE, Connection, Device, Port, Reference
 from edsconv.model.values import PathItem
-from edsconv.xml.common import EDSCONV, Header, serialise
 from edsconv.xml.commnet import commnet_profile, read_commnet_profile
-
-from conftest import REPO, SHARED_REAL
+from edsconv.xml.common import EDSCONV, Header, serialise
 
 CORPUS = sorted([REPO / "corpus" / "examples" / "io_adapter.eds", *(REPO / "corpus" / "spec").glob("*.eds"),
                  *(REPO / "corpus" / "modular").glob("*.eds")])

@@ -8,13 +8,12 @@ import pytest
 from lxml import etree
 
 import edsconv
+from conftest import REPO, SHARED_REAL
 from edsconv.model import MODULE, Device, Reference
 from edsconv.model.values import PathItem, Revision
 from edsconv.xml.common import EDSCONV, Header, serialise
 from edsconv.xml.device import DEVICE_PROFILE_PARTS, device_profile, equal_parts, read_device_profile
 from edsconv.xml.safe import parse_xml
-
-from conftest import REPO, SHARED_REAL
 
 CORPUS = [REPO / "corpus" / "examples" / "io_adapter.eds", *sorted((REPO / "corpus" / "spec").glob("*.eds")),
           *sorted((REPO / "corpus" / "modular").glob("*.eds"))]

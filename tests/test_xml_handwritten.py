@@ -18,6 +18,7 @@ import pytest
 import xmlschema
 
 import edsconv
+from conftest import REPO
 from edsconv.diagnostics import Severity
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.syntax import EdsFile, String
@@ -25,8 +26,6 @@ from edsconv.eds.writer import write
 from edsconv.resources import data_dir
 from edsconv.xml.convert import device_from_profiles
 from edsconv.xml.validate import validate_file
-
-from conftest import REPO
 
 HANDWRITTEN = REPO / "corpus" / "xml" / "handwritten"
 #: The folder of a profile names its kind; the schema it was written from (as restored).

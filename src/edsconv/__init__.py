@@ -1,10 +1,10 @@
 """edsconv: parse, check and convert CIP Electronic Data Sheets (ISO 15745-4 Annex C.4)."""
 
 from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity
-from edsconv.model import Device
 from edsconv.eds.reader import load, parse
-from edsconv.model.build import build
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, ValueKind
+from edsconv.model import Device
+from edsconv.model.build import build
 
 
 def analyse(eds: EdsFile, selection: Selection = EVERYTHING) -> tuple[Device, list[Diagnostic]]:

@@ -20,6 +20,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from edsconv.eds.syntax import Group, Scalar, String
 from edsconv.model import (
     Assembly,
     AssemblyMember,
@@ -30,7 +31,6 @@ from edsconv.model import (
     Parameter,
     Reference,
 )
-from edsconv.eds.syntax import Group, Scalar, String
 from edsconv.model.values import PathItem, StringIMember
 
 #: Categories of changes, in the order the text output lists them.

@@ -18,10 +18,10 @@ import traceback
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
-from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, load_rules, rule
+from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, rule
 from edsconv.eds.reader import load
-from edsconv.report import FileReport
 from edsconv.eds.syntax import EdsFile
+from edsconv.report import FileReport
 
 INTERNAL_ERROR = rule(
     "EDS000", Severity.ERROR, "edsconv",

@@ -51,8 +51,8 @@ from dataclasses import dataclass, field
 from edsconv import spec_tables as tables
 from edsconv.checks.entity_rules import MODULE_IN_MEMBER, PROXY_CONNECT_NAME_MODULE
 from edsconv.diagnostics import Diagnostic, Rule, Severity, has_errors, rule
-from edsconv.model import MODULE, MODULE_MEMBER_LIST
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, Value, ValueKind
+from edsconv.model import MODULE, MODULE_MEMBER_LIST
 
 _M = "C.4.1.5.3"
 NO_MATCHING_RACK = rule(
@@ -443,7 +443,7 @@ class _Merger:
     # Connection Manager
 
     def _connection(self, proxy: Entry, proxied: Entry | None) -> list[Field] | None:
-        if CONNECTION_NAME_POSITION < len(proxy.fields) and _is_word(proxy.fields[CONNECTION_NAME_POSITION], MODULE):
+        if len(proxy.fields) > CONNECTION_NAME_POSITION and _is_word(proxy.fields[CONNECTION_NAME_POSITION], MODULE):
             self.report(PROXY_CONNECT_NAME_MODULE, f"{proxy.keyword}: the connection name string shall be given by "
                         f"the adapter, not {MODULE}", self.adapter, proxy.fields[CONNECTION_NAME_POSITION])
             return None

@@ -30,8 +30,8 @@ from edsconv.checks.entity_rules import (
     NESTED_ASSEMBLY,
     NO_CLASS_OR_TRIGGER,
     PACKED_EPATH_MEMBER,
-    PARAMETERS_RESERVED_BITS,
     PARAM_RESERVED_BITS,
+    PARAMETERS_RESERVED_BITS,
     PROXY_CONNECT_NAME_MODULE,
     QUERY_FIELD_VALUE,
     RESERVED_REAL_TIME_FORMAT,
@@ -53,6 +53,7 @@ from edsconv.checks.entity_rules import (
     WRONG_PARAMETER_TYPE,
 )
 from edsconv.diagnostics import Diagnostic
+from edsconv.eds.syntax import Entry
 from edsconv.model import (
     MODULE,
     Assembly,
@@ -64,10 +65,7 @@ from edsconv.model import (
     Reference,
 )
 from edsconv.model.build import iter_references
-from edsconv.eds.syntax import Entry
 from edsconv.model.values import PathItem
-
-
 
 
 def _node(entry: Entry | None, index: int):

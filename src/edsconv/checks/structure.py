@@ -29,11 +29,11 @@ from edsconv.checks.structure_rules import (
     KEYWORD_STARTS_WITH_DIGIT,
     MISSING_ENTRY,
     MISSING_SECTION,
-    MODIFIED_BEFORE_CREATED,
     MOD_TIME_WITHOUT_DATE,
+    MODIFIED_BEFORE_CREATED,
+    NO_TCP_PORT,
     NOT_A_CHOICE,
     NOT_ETHERNETIP,
-    NO_TCP_PORT,
     NUMBERING,
     PUBLIC_CLASS_SUBCLASSIFIED,
     REQUIRED_FIELD_EMPTY,
@@ -45,8 +45,8 @@ from edsconv.checks.structure_rules import (
     VENDOR_SECTION_NOT_LAST,
 )
 from edsconv.diagnostics import Diagnostic, Rule
-from edsconv.model.build import iter_references
 from edsconv.eds.syntax import Entry, Field, Scalar, Section, String
+from edsconv.model.build import iter_references
 
 REQUIRED, RESERVED = tables.Presence.REQUIRED, tables.Presence.RESERVED
 

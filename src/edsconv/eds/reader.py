@@ -30,8 +30,8 @@ from edsconv.eds.reader_rules import (
     LONG_PREFIX_ON_CONTINUATION,
     MISSING_COMMA,
     MISSING_SEMICOLON,
-    NOT_ASCII,
     NO_SECTIONS,
+    NOT_ASCII,
     SECTION_NAME,
     SYNTAX_ERROR,
     TOO_DEEP,
@@ -51,7 +51,6 @@ from edsconv.eds.syntax import (
     String,
     Unparsed,
 )
-
 
 #: Syntax errors reported per file before the reader gives up.
 MAX_SYNTAX_ERRORS = 100

@@ -6,9 +6,28 @@ the decoder of CIP paths for people and :mod:`edsconv.model.plain` model values 
 """
 
 from edsconv.model.device import (
-    MODULE, MODULE_MEMBER_LIST, Reference, FileDescription, Identity, Classification, ParamClass,
-    Scaling, Parameter, ParameterGroup, AssemblyMember, Assembly, ConnectionEndpoint, Connection,
-    Port, Rack, Query, Modular, GenericEntry, GenericSection, CommentNote, Device,
+    MODULE,
+    MODULE_MEMBER_LIST,
+    Assembly,
+    AssemblyMember,
+    Classification,
+    CommentNote,
+    Connection,
+    ConnectionEndpoint,
+    Device,
+    FileDescription,
+    GenericEntry,
+    GenericSection,
+    Identity,
+    Modular,
+    ParamClass,
+    Parameter,
+    ParameterGroup,
+    Port,
+    Query,
+    Rack,
+    Reference,
+    Scaling,
 )
 
 __all__ = [

@@ -16,6 +16,7 @@ from typing import Any
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String, Value, ValueKind
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -38,7 +39,6 @@ from edsconv.model import (
     Reference,
     Scaling,
 )
-from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String, Value, ValueKind
 from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
 
 OBSOLETE_DATA_TYPE = rule(

@@ -147,9 +147,9 @@ def find_wrapped_eds(xml_path: Path, root: etree._Element) -> tuple[Path | None,
 def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnostic]]:
     """Read, validate and convert XML profiles into one Device; a wrapper resolves to its EDS."""
     from edsconv import build, load
-    from edsconv.xml.validate import read_and_validate
     from edsconv.xml.commnet import read_commnet_profile
     from edsconv.xml.device import read_device_profile
+    from edsconv.xml.validate import read_and_validate
 
     device = Device()
     diagnostics: list[Diagnostic] = []

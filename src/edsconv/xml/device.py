@@ -29,6 +29,7 @@ from lxml import etree
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.eds.syntax import Scalar, String
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -51,7 +52,6 @@ from edsconv.model import (
     Scaling,
 )
 from edsconv.model.build import iter_references, reference
-from edsconv.eds.syntax import Scalar, String
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
 

@@ -15,8 +15,8 @@ from pathlib import Path
 from lxml import etree
 
 from edsconv.diagnostics import Diagnostic, Severity, block, rule
-from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
 from edsconv.xml.safe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
+from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
 
 NOT_WELL_FORMED = rule(
     "XML001", Severity.ERROR, "XML 1.0", "The file is not well-formed XML",

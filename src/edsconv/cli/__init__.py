@@ -38,6 +38,7 @@ class LazyGroup(click.Group):
         "show": "edsconv.show:show_command",
         "eds2xml": "edsconv.xml.convert:eds2xml_command",
         "xml2eds": "edsconv.xml.convert:xml2eds_command",
+        "lsp": "edsconv.cli.lsp:lsp_command",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -142,10 +142,12 @@ def main() -> None:
     print(f"largest file {change['file']} ({change['bytes']:,} bytes)")
     print(f"  open -> diagnostics            {change['open_to_diagnostics_s'] * 1000:8.0f} ms")
     print(f"  one-character change -> diags {change['change_to_diagnostics_s'] * 1000:8.0f} ms "
-          f"({change['change_to_diagnostics_without_delay_s'] * 1000:.0f} ms after the {CHANGE_DELAY * 1000:.0f} ms pause)")
+          f"({change['change_to_diagnostics_without_delay_s'] * 1000:.0f} ms after the "
+          f"{CHANGE_DELAY * 1000:.0f} ms pause)")
     print(f"  hover right after a change     {change['hover_right_after_change_s'] * 1000:8.0f} ms")
     print(f"{requests['requests']} references on {requests['files']} files (best of {arguments.repeat} each)")
-    print(f"  hover      median {requests['hover_median_s'] * 1000:6.1f} ms, max {requests['hover_max_s'] * 1000:6.1f} ms")
+    print(f"  hover      median {requests['hover_median_s'] * 1000:6.1f} ms, "
+          f"max {requests['hover_max_s'] * 1000:6.1f} ms")
     print(f"  definition median {requests['definition_median_s'] * 1000:6.1f} ms, "
           f"max {requests['definition_max_s'] * 1000:6.1f} ms")
     if arguments.json:

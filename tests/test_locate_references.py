@@ -26,6 +26,10 @@ def apply(text: str, edits: list[tuple[tuple[int, int, int, int], str]]) -> str:
     return "\n".join(lines)
 
 
+def apply_fix(text: str, fix: actions.Fix) -> str:
+    return apply(text, [((e.line, e.column, e.end_line, e.end_column), e.text) for e in fix.edits])
+
+
 def test_locate_finds_header_keyword_and_nested_field():
     eds = edsconv.parse(EXAMPLE)
     header = locate(eds, 87, 3)
@@ -102,13 +106,12 @@ def test_rename_is_refused_when_a_paired_entry_of_the_new_number_exists():
 
 
 def test_suppression_comment_goes_on_the_entry():
-    broken = EXAMPLE.replace("                8,Param2,\n                8,;", "                8,Param9,\n                8,;")
+    broken = EXAMPLE.replace("8,Param2,\n                8,;", "8,Param9,\n                8,;")  # Assem100
     first = actions.suppression(analyse(broken), "EDS301", 95, 19)
     assert first.edits == (actions.Edit(89, 19, 89, 19, " $ edsconv: ignore[EDS301]"),)
-    suppressed = apply(broken, [((e.line, e.column, e.end_line, e.end_column), e.text) for e in first.edits])
+    suppressed = apply_fix(broken, first)
     second = actions.suppression(analyse(suppressed), "EDS302", 95, 19)
-    assert apply(suppressed, [((e.line, e.column, e.end_line, e.end_column), e.text) for e in second.edits]) \
-        .splitlines()[88] == "        Assem100 = $ edsconv: ignore[EDS301, EDS302]"
+    assert apply_fix(suppressed, second).splitlines()[88] == "        Assem100 = $ edsconv: ignore[EDS301, EDS302]"
     assert actions.suppression(analyse(suppressed), "EDS301", 95, 19) is None
     commented = actions.suppression(analyse(EXAMPLE), "EDS999", 114, 20)  # Connection1's first line has no comment
     assert commented.edits[0].text == " $ edsconv: ignore[EDS999]"

@@ -20,12 +20,14 @@ pytestmark = pytest.mark.asyncio(loop_scope="module")
 
 EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text()
 #: io_adapter.eds with Assem100's member reference Param2 (line 95) changed to the undefined Param9
-BROKEN = EXAMPLE.replace("                8,Param2,\n                8,;", "                8,Param9,\n                8,;")
-FAULT = types.Position(94, 20)  # on "Param9"
+BROKEN = EXAMPLE.replace("8,Param2,\n                8,;", "8,Param9,\n                8,;")
 INITIALIZE: dict[str, types.InitializeResult] = {}
 
 
-@pytest_lsp.fixture(scope="module", config=ClientServerConfig(server_command=[sys.executable, "-m", "edsconv", "lsp"]))
+SERVER = ClientServerConfig(server_command=[sys.executable, "-m", "edsconv", "lsp"])
+
+
+@pytest_lsp.fixture(scope="module", config=SERVER)
 async def client(lsp_client: LanguageClient):
     capabilities = types.ClientCapabilities(text_document=types.TextDocumentClientCapabilities(
         rename=types.RenameClientCapabilities(prepare_support=True)))
@@ -162,7 +164,8 @@ async def test_formatting_gives_the_canonical_layout_and_nothing_for_syntax_erro
 
 
 async def completion_labels(client: LanguageClient, uri: str, line: int, character: int) -> dict[str, str | None]:
-    found = await client.text_document_completion_async(types.CompletionParams(doc(uri), types.Position(line, character)))
+    found = await client.text_document_completion_async(
+        types.CompletionParams(doc(uri), types.Position(line, character)))
     return {item.label: item.detail for item in found.items}
 
 
@@ -200,8 +203,7 @@ async def test_document_symbols_name_parameters_and_assemblies(client: LanguageC
 
 
 async def test_shutdown_ends_the_server():
-    config = ClientServerConfig(server_command=[sys.executable, "-m", "edsconv", "lsp"])
-    own = await config.start()
+    own = await SERVER.start()
     await own.initialize_session(types.InitializeParams(capabilities=types.ClientCapabilities()))
     await own.shutdown_session()
     assert own._server.returncode == 0

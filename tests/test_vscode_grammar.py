@@ -17,6 +17,7 @@ NODE = shutil.which("node")
 @pytest.mark.skipif(NODE is None or not (EXTENSION / "node_modules" / "vscode-textmate").is_dir(),
                     reason="needs node and `npm ci` in editors/vscode")
 def test_textmate_grammar_scopes():
-    run = subprocess.run([NODE, "--test", "test/grammar.test.js"], cwd=EXTENSION, capture_output=True, text=True, timeout=120)
+    run = subprocess.run([NODE, "--test", "test/grammar.test.js"], cwd=EXTENSION, capture_output=True, text=True,
+                         timeout=120)
     assert run.returncode == 0, run.stdout + run.stderr
     assert "# fail 0" in run.stdout

@@ -10,7 +10,7 @@ import click
               "accepted because editors pass it).")
 def lsp_command(stdio: bool) -> int:
     """Run the EDS language server: diagnostics, hover, navigation, rename, formatting, completion."""
-    from edsconv.cli import EXIT_USAGE
+    from edsconv.cli import EXIT_CLEAN, EXIT_USAGE
 
     try:
         from edsconv.lsp.server import create_server
@@ -18,4 +18,4 @@ def lsp_command(stdio: bool) -> int:
         click.echo(f"edsconv lsp needs the lsp extra: pip install 'edsconv[lsp]' ({error})", err=True)
         return EXIT_USAGE
     create_server().start_io()
-    return 0
+    return EXIT_CLEAN

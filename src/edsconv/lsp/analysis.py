@@ -34,6 +34,7 @@ class Analysis:
     device: Device
     diagnostics: list[Diagnostic]
     _spans: list[Occurrence] | None = field(default=None, repr=False)
+    _definitions: dict[str, Entry] | None = field(default=None, repr=False)
 
     @property
     def spans(self) -> list[Occurrence]:
@@ -43,7 +44,10 @@ class Analysis:
         return self._spans
 
     def definitions(self) -> dict[str, Entry]:
-        return definitions(self.device)
+        """The entries references can name, by keyword."""
+        if self._definitions is None:
+            self._definitions = definitions(self.device)
+        return self._definitions
 
     def line_text(self, line: int) -> str:
         """Line ``line`` (1-based) without its line end; "" beyond the end."""

@@ -87,10 +87,13 @@ class Publisher:
 
     async def _publish(self, uri: str, delay: float) -> None:
         await asyncio.sleep(delay)
+        if uri not in self._server.workspace.text_documents:
+            return  # closed meanwhile
         document = self._server.workspace.get_text_document(uri)
         text, version = document.source, document.version
         analysis = await asyncio.shield(self._analyses.of(uri, text, version, document.path))
-        if self._server.workspace.get_text_document(uri).source != text:
+        documents = self._server.workspace.text_documents
+        if uri not in documents or documents[uri].source != text:
             return  # changed while it was being checked: the newer text's own check publishes
         positions = Positions(self._server.workspace.position_codec, analysis.lines)
         settings = self._settings(uri)

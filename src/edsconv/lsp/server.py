@@ -45,10 +45,6 @@ class EdsLanguageServer(LanguageServer):
         return analysis, Positions(self.workspace.position_codec, analysis.lines)
 
 
-def _range(positions: Positions, span: tuple[int, int, int, int]) -> types.Range:
-    return positions.range(*span)
-
-
 def create_server() -> EdsLanguageServer:
     """A server with every feature registered; ``start_io()`` runs it on stdin/stdout."""
     server = EdsLanguageServer()
@@ -85,20 +81,20 @@ def _register_reading(server: EdsLanguageServer) -> None:
         if found is None:
             return None
         text, span = found
-        return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, text), _range(positions, span))
+        return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, text), positions.range(*span))
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
     async def on_definition(ls: EdsLanguageServer, params: types.DefinitionParams) -> types.Location | None:
         analysis, positions = await ls.current(params.text_document.uri)
         span = navigation.definition(analysis, *positions.from_client(params.position))
-        return None if span is None else types.Location(params.text_document.uri, _range(positions, span))
+        return None if span is None else types.Location(params.text_document.uri, positions.range(*span))
 
     @server.feature(types.TEXT_DOCUMENT_REFERENCES)
     async def on_references(ls: EdsLanguageServer, params: types.ReferenceParams) -> list[types.Location]:
         analysis, positions = await ls.current(params.text_document.uri)
         spans = navigation.references(analysis, *positions.from_client(params.position),
                                       params.context.include_declaration)
-        return [types.Location(params.text_document.uri, _range(positions, span)) for span in spans]
+        return [types.Location(params.text_document.uri, positions.range(*span)) for span in spans]
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     async def on_symbols(ls: EdsLanguageServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
@@ -119,7 +115,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
         found = navigation.target_at(analysis, *positions.from_client(params.position))
         if found is None:
             return None
-        return types.PrepareRenamePlaceholder(_range(positions, navigation.span_of(found)), found.target)
+        return types.PrepareRenamePlaceholder(positions.range(*navigation.span_of(found)), found.target)
 
     @server.feature(types.TEXT_DOCUMENT_RENAME)
     async def on_rename(ls: EdsLanguageServer, params: types.RenameParams) -> types.WorkspaceEdit:
@@ -129,7 +125,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
         except navigation.RenameRefused as refusal:
             raise JsonRpcInvalidRequest(str(refusal)) from None
         return types.WorkspaceEdit(changes={params.text_document.uri: [
-            types.TextEdit(_range(positions, span), text) for span, text in edits]})
+            types.TextEdit(positions.range(*span), text) for span, text in edits]})
 
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     async def on_formatting(ls: EdsLanguageServer, params: types.DocumentFormattingParams) -> list[types.TextEdit]:
@@ -139,7 +135,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
             return []
         end = (len(analysis.lines) + 1, 1) if analysis.text.endswith(("\n", "\r")) else \
             (len(analysis.lines), len(analysis.line_text(len(analysis.lines))) + 1)
-        return [types.TextEdit(_range(positions, (1, 1, *end)), text)]
+        return [types.TextEdit(positions.range(1, 1, *end), text)]
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))

@@ -13,11 +13,11 @@ from typing import Any
 from edsconv import show
 from edsconv import spec_tables as tables
 from edsconv.eds.locate import Spot, locate, value_end
-from edsconv.eds.syntax import Entry, Field, Section
+from edsconv.eds.syntax import Entry, Field, Section, String
 from edsconv.lsp.analysis import Analysis
 from edsconv.model import Assembly, Connection, Device, GenericEntry, Parameter
 from edsconv.model.references import occurrence_at
-from edsconv.model.values import ValueProblem, to_integer
+from edsconv.model.values import ValueProblem, to_integer, to_path
 
 #: (line, column, end_line, end_column), 1-based, end exclusive
 Span = tuple[int, int, int, int]
@@ -103,12 +103,23 @@ def field_text(spot: Spot, device: Device) -> str:
         lines.append(_data_type_text(spot.field))
     if field_spec.bits and len(spot.field_path) == 1:
         lines.extend(bits_text(field_spec.bits, spot.field, device.connections.get(entry.keyword)))
+    if "EPATH" in field_spec.alternatives and isinstance(spot.field.value, String):
+        lines.append(_path_text(spot.field.value, device))
     return "\n\n".join(line for line in lines if line)
 
 
 def _type_words(eds_type: str) -> str:
     return " or ".join(kind.removesuffix("Ref") + "N" if kind.endswith("Ref") else kind
                        for kind in eds_type.split("|"))
+
+
+def _path_text(value: String, device: Device) -> str:
+    """A path segment by segment, as ``edsconv show`` decodes it."""
+    try:
+        decoded = show.decode_path(to_path(value, allow_references=True), device)
+    except ValueProblem:
+        return ""
+    return f"Path: {decoded['summary']}" if decoded and decoded["summary"] else ""
 
 
 def _data_type_text(item: Field) -> str:

@@ -110,7 +110,8 @@ def _register_reading(server: EdsLanguageServer) -> None:
 
 def _register_editing(server: EdsLanguageServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
-    async def on_prepare_rename(ls: EdsLanguageServer, params: types.PrepareRenameParams):
+    async def on_prepare_rename(ls: EdsLanguageServer,
+                                params: types.PrepareRenameParams) -> types.PrepareRenamePlaceholder | None:
         analysis, positions = await ls.current(params.text_document.uri)
         found = navigation.target_at(analysis, *positions.from_client(params.position))
         if found is None:

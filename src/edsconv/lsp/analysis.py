@@ -1,4 +1,5 @@
-"""One analysis of one version of a document: the syntax model, the typed model and every diagnostic.
+"""One analysis of one version of a document: the syntax model, the typed model, every diagnostic
+and every place that names an entry.
 
 :class:`Analyses` keeps the latest analysis of each open document and runs new
 ones in a worker thread, so that reading a large file never holds up the
@@ -33,21 +34,10 @@ class Analysis:
     eds: EdsFile
     device: Device
     diagnostics: list[Diagnostic]
-    _spans: list[Occurrence] | None = field(default=None, repr=False)
-    _definitions: dict[str, Entry] | None = field(default=None, repr=False)
-
-    @property
-    def spans(self) -> list[Occurrence]:
-        """Every place that names an entry (computed on first use: hover and navigation need it)."""
-        if self._spans is None:
-            self._spans = occurrences(self.eds, self.device, self.lines)
-        return self._spans
-
-    def definitions(self) -> dict[str, Entry]:
-        """The entries references can name, by keyword."""
-        if self._definitions is None:
-            self._definitions = definitions(self.device)
-        return self._definitions
+    #: every place that names an entry (hover and navigation)
+    spans: list[Occurrence] = field(repr=False)
+    #: the entries references can name, by keyword
+    definitions: dict[str, Entry] = field(repr=False)
 
     def line_text(self, line: int) -> str:
         """Line ``line`` (1-based) without its line end; "" beyond the end."""
@@ -67,7 +57,8 @@ def analyse(text: str, version: int | None = None, path: str | None = None) -> A
         message = f"internal error {type(error).__name__}: {error} (at {where.name}:{where.lineno}); please report it"
         device, diagnostics = Device(eds=eds), [*eds.diagnostics, Diagnostic.of(INTERNAL_ERROR, message, 1, 1, path)]
     diagnostics.sort(key=lambda d: (d.line, d.column))
-    return Analysis(version, text, lines, eds, device, diagnostics)
+    return Analysis(version, text, lines, eds, device, diagnostics, occurrences(eds, device, lines),
+                    definitions(device))
 
 
 class Analyses:

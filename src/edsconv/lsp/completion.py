@@ -90,7 +90,7 @@ def references(analysis: Analysis, families: list[str]) -> list[types.Completion
     """The entries of ``families`` this file defines, with their names."""
     device = analysis.device
     items = []
-    for keyword in analysis.definitions():
+    for keyword in analysis.definitions:
         if tables.split_numbered(keyword)[0] not in families:
             continue
         described = device.parameters.get(keyword) or device.assemblies.get(keyword)

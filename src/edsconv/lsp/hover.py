@@ -38,7 +38,7 @@ def hover(analysis: Analysis, line: int, column: int) -> tuple[str, Span] | None
                         spot.section.column + len(spot.section.name) + 2)
     elif spot.on_keyword and spot.entry is not None:
         parts.append(entry_text(spot.section, spot.entry))
-        if spot.entry.keyword in analysis.definitions():
+        if spot.entry.keyword in analysis.definitions:
             parts.append(target_text(analysis.device, spot.entry.keyword))
         span = span or (spot.entry.line, spot.entry.column, spot.entry.line,
                         spot.entry.column + len(spot.entry.keyword))

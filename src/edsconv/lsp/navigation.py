@@ -32,7 +32,7 @@ def target_at(analysis: Analysis, line: int, column: int) -> Occurrence | None:
 def definition(analysis: Analysis, line: int, column: int) -> Span | None:
     """Where the entry named at ``line``:``column`` is defined; None when it is not (or nothing is named)."""
     found = target_at(analysis, line, column)
-    entry = analysis.definitions().get(found.target) if found is not None else None
+    entry = analysis.definitions.get(found.target) if found is not None else None
     if entry is None:
         return None
     return entry.line, entry.column, entry.line, entry.column + len(entry.keyword)

@@ -74,7 +74,9 @@ def occurrences(eds: EdsFile, device: Device, lines: Sequence[str]) -> list[Occu
     """
     found = [_keyword_span(entry, keyword, "definition") for keyword, entry in definitions(device).items()]
     found += _paired_entries(eds)
-    found += [_reference_span(reference) for reference in iter_references(device)
+    section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
+    found += [_reference_span(reference, section_of.get(id(reference.entry), ""))
+              for reference in iter_references(device)
               if reference.entry is not None and reference.field_index < len(reference.entry.fields)]
     found += _path_references(eds, lines)
     return found
@@ -109,28 +111,27 @@ _KIND_BY_SECTION = {"Groups": "group member", "Assembly": "assembly member", "Co
                     "Modular": "slot display rule"}
 
 
-def _reference_span(reference: Reference) -> Occurrence:
+def _reference_span(reference: Reference, section: str) -> Occurrence:
     entry = reference.entry
     item = entry.fields[reference.field_index]
     raw = item.raw or ""
     by_number = not raw.startswith(reference.family)
     text = raw if by_number else reference.keyword
-    specs = tables.entries_named(entry.keyword)
-    kind = _KIND_BY_SECTION.get(specs[0].section, "reference") if specs else "reference"
-    return Occurrence(reference.keyword, item.line, item.column, item.column + len(text),
-                      "" if by_number else reference.family, kind, entry.keyword)
+    line, column = item.line, item.column
+    return Occurrence(reference.keyword, line, column, column + len(text), "" if by_number else reference.family,
+                      _KIND_BY_SECTION.get(section, "reference"), entry.keyword)
 
 
 def _path_references(eds: EdsFile, lines: Sequence[str]) -> Iterator[Occurrence]:
     """``[ParamN]`` and ``ParamN`` inside the path strings of every entry whose field is an EPATH."""
     for section in eds.sections:
         for entry in section.entries:
-            spec = tables.entry_spec(section.name, entry.keyword)
-            if spec is None:
-                continue
-            for index, item in enumerate(entry.fields):
+            strings = [(i, item) for i, item in enumerate(entry.fields)
+                       if isinstance(item.value, String) and "Param" in item.value.raw]
+            spec = tables.entry_spec(section.name, entry.keyword) if strings else None
+            for index, item in strings if spec is not None else ():
                 field_spec = spec.field_at(index + 1)
-                if field_spec is None or "EPATH" not in field_spec.alternatives or not isinstance(item.value, String):
+                if field_spec is None or "EPATH" not in field_spec.alternatives:
                     continue
                 for line, column, part in _string_parts(item.value, item.line, item.column, lines):
                     for match in _PATH_REFERENCE.finditer(part):

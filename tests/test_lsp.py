@@ -174,15 +174,23 @@ async def completion_labels(client: LanguageClient, uri: str, line: int, charact
 
 
 async def test_completion_offers_sections_keywords_numbers_types_and_references(client: LanguageClient):
-    text = EXAMPLE.replace("        Enum3 = 0,", "        \n        Enum3 = 0,").replace("[Port]", "[")
+    blank = "        \n"
+    text = EXAMPLE.replace("[Port]", "[")
+    for entry in ("        Enum3 = 0,", "        Assem150 =", "        Connection2 ="):  # a blank line before each
+        text = text.replace(entry, blank + entry)
+    lines = text.splitlines()
     uri, _ = await open_document(client, "completion", text)
-    keywords = await completion_labels(client, uri, 67, 8)  # the blank line added in [Params]
-    assert {"Param5", "Enum4", "ProxyParam1"} <= set(keywords)
-    sections = await completion_labels(client, uri, text.splitlines().index("["), 1)
+    blanks = [index for index, line in enumerate(lines) if line == blank.rstrip("\n")]
+    in_params, in_assembly, in_connections = [await completion_labels(client, uri, line, 8) for line in blanks]
+    assert {"Param5", "Enum4", "ProxyParam1"} <= set(in_params)
+    assert "Assem152" in in_assembly and "Revision" not in in_assembly
+    assert "Connection3" in in_connections
+    sections = await completion_labels(client, uri, lines.index("["), 1)
     assert {"Port", "Modular"} <= set(sections) and "Params" not in sections
     data_types = await completion_labels(client, uri, 32, 18)  # Param1 field 5, Data Type
     assert data_types["0xC8"] == "UDINT" and data_types["0xCA"] == "REAL"
-    formats = await completion_labels(client, uri, 116 + 1, 28)  # Connection1 O=>T format
+    format_line = lines.index("                Param1,2,Assem150,      $ O=>T RPI, size, format")
+    formats = await completion_labels(client, uri, format_line, 28)  # Connection1 O=>T format
     assert formats["Assem100"] == "Inputs" and formats["Param1"] == "RPI"
 
 

@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from edsconv.diagnostics import Diagnostic
+from edsconv.lint import selected
 
 
 @dataclass(frozen=True, slots=True)
@@ -24,8 +25,6 @@ class Settings:
     ignore: tuple[str, ...] = ()
 
     def reports(self, diagnostic: Diagnostic) -> bool:
-        from edsconv.lint import selected
-
         return selected(diagnostic.code, self.select, self.ignore)
 
 

@@ -119,6 +119,9 @@ async def test_hover_explains_references_fields_and_bits(client: LanguageClient)
     assert "- transport type: exclusive-owner" in on_trigger.contents.value
     on_keyword = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(28, 10)))
     assert on_keyword.contents.value.startswith("**ParamN** (C.4.1.4.6, Table C.13)")
+    on_field = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(15, 20)))
+    assert on_field.contents.value.startswith("**ProdType field 1: Device Type** (UINT), required")
+    assert "Range: 0 .. 65535 (UINT)" in on_field.contents.value
     on_path = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(121, 22)))
     assert "Path: class 0x04 (Assembly), instance 0x97, connection point 0x96" in on_path.contents.value
     on_data_type = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(32, 18)))

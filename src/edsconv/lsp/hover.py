@@ -97,8 +97,7 @@ def field_text(spot: Spot, device: Device) -> str:
         lines.append(field_spec.note)
     if field_spec.choices:
         lines.append("Allowed: " + ", ".join(f"`{choice}`" for choice in field_spec.choices))
-    if field_spec.value_range:
-        lines.append(f"Range: {field_spec.value_range[0]} .. {field_spec.value_range[1]}")
+    lines.append(_range_text(field_spec))
     if field_spec.name == "Data Type":
         lines.append(_data_type_text(spot.field))
     if field_spec.bits and len(spot.field_path) == 1:
@@ -106,6 +105,16 @@ def field_text(spot: Spot, device: Device) -> str:
     if "EPATH" in field_spec.alternatives and isinstance(spot.field.value, String):
         lines.append(_path_text(spot.field.value, device))
     return "\n\n".join(line for line in lines if line)
+
+
+def _range_text(field_spec: tables.FieldSpec) -> str:
+    """The field's own range, else the range of its data type when it has only one."""
+    if field_spec.value_range:
+        return f"Range: {field_spec.value_range[0]} .. {field_spec.value_range[1]}"
+    data_type = tables.DATA_TYPES_BY_NAME.get(field_spec.eds_type)
+    if data_type is None or data_type.minimum is None or data_type.kind == "real":
+        return ""
+    return f"Range: {data_type.minimum} .. {data_type.maximum} ({data_type.name})"
 
 
 def _type_words(eds_type: str) -> str:

@@ -38,6 +38,7 @@ class LazyGroup(click.Group):
         "fmt": "edsconv.cli.fmt:fmt_command",
         "diff": "edsconv.cli.diff:diff_command",
         "merge": "edsconv.cli.merge:merge_command",
+        "lsp": "edsconv.cli.lsp:lsp_command",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -1,0 +1,21 @@
+"""``edsconv lsp``: run the language server on stdin/stdout (docs/editors.md)."""
+
+from __future__ import annotations
+
+import click
+
+
+@click.command("lsp")
+@click.option("--stdio", is_flag=True, help="Speak LSP on stdin/stdout (the default and only transport; "
+              "accepted because editors pass it).")
+def lsp_command(stdio: bool) -> int:
+    """Run the EDS language server: diagnostics, hover, navigation, rename, formatting, completion."""
+    from edsconv.cli import EXIT_CLEAN, EXIT_USAGE
+
+    try:
+        from edsconv.lsp.server import create_server
+    except ImportError as error:
+        click.echo(f"edsconv lsp needs the lsp extra: pip install 'edsconv[lsp]' ({error})", err=True)
+        return EXIT_USAGE
+    create_server().start_io()
+    return EXIT_CLEAN

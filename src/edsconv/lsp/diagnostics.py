@@ -1,0 +1,104 @@
+"""edsconv diagnostics as LSP diagnostics, and their publication: on open and save at once,
+on change after a pause in typing (the latest text wins; an older analysis is never published)."""
+
+from __future__ import annotations
+
+import asyncio
+import functools
+from collections.abc import Callable
+from pathlib import Path
+
+from lsprotocol import types
+from pygls.lsp.server import LanguageServer
+
+from edsconv.diagnostics import Diagnostic, Severity
+from edsconv.eds.locate import value_end
+from edsconv.lsp.analysis import Analyses, Analysis
+from edsconv.lsp.positions import Positions
+from edsconv.lsp.settings import Settings
+
+SOURCE = "edsconv"
+#: Seconds without a change before a changed document is checked again.
+CHANGE_DELAY = 0.3
+#: Stands in for the project's home page while pyproject.toml declares none in [project.urls]:
+#: the link then points at nothing, but still names the rule's heading in docs/rules.md.
+PLACEHOLDER_HOME = "https://edsconv.invalid"
+_SEVERITY = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning,
+             Severity.INFO: types.DiagnosticSeverity.Information}
+
+
+@functools.cache
+def rule_documentation_url(code: str) -> str:
+    """Where a rule is documented: its heading in docs/rules.md, on the project's home page when the
+    installed package declares one; else in the checkout the package runs from; else under
+    :data:`PLACEHOLDER_HOME`. The one place that decides the ``codeDescription`` link."""
+    from edsconv.report import project_url, rule_help_uri
+
+    home = project_url()
+    if home:
+        return rule_help_uri(home, code)
+    checkout = Path(__file__).resolve().parents[3] / "docs" / "rules.md"
+    if checkout.is_file():
+        return f"{checkout.as_uri()}#{code.lower()}"
+    return rule_help_uri(PLACEHOLDER_HOME, code)
+
+
+def to_lsp(diagnostic: Diagnostic, analysis: Analysis, positions: Positions) -> types.Diagnostic:
+    line = max(diagnostic.line, 1)
+    column = max(diagnostic.column, 1)
+    if diagnostic.end_line:
+        end_line, end_column = diagnostic.end_line, diagnostic.end_column or column + 1
+    else:
+        end_line, end_column = line, max(value_end(analysis.line_text(line), column), column + 1)
+    message = f"{diagnostic.message} [{diagnostic.clause}]" if diagnostic.clause else diagnostic.message
+    return types.Diagnostic(
+        range=positions.range(line, column, end_line, end_column),
+        message=message,
+        severity=_SEVERITY[diagnostic.severity],
+        code=diagnostic.code,
+        code_description=types.CodeDescription(href=rule_documentation_url(diagnostic.code)),
+        source=SOURCE,
+        data={"clause": diagnostic.clause},
+    )
+
+
+class Publisher:
+    """Publishes the diagnostics of each document once its text has settled."""
+
+    def __init__(self, server: LanguageServer, analyses: Analyses,
+                 settings: Callable[[str], Settings]) -> None:
+        self._server = server
+        self._analyses = analyses
+        self._settings = settings
+        self._pending: dict[str, asyncio.Task] = {}
+
+    def schedule(self, uri: str, delay: float = 0.0) -> None:
+        """Check ``uri`` after ``delay`` seconds; a newer call for the same document replaces this one."""
+        pending = self._pending.pop(uri, None)
+        if pending is not None:
+            pending.cancel()
+        self._pending[uri] = asyncio.ensure_future(self._publish(uri, delay))
+
+    def clear(self, uri: str) -> None:
+        pending = self._pending.pop(uri, None)
+        if pending is not None:
+            pending.cancel()
+        self._server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+
+    async def _publish(self, uri: str, delay: float) -> None:
+        await asyncio.sleep(delay)
+        if uri not in self._server.workspace.text_documents:
+            return  # closed meanwhile
+        document = self._server.workspace.get_text_document(uri)
+        text, version = document.source, document.version
+        analysis = await asyncio.shield(self._analyses.of(uri, text, version, document.path))
+        documents = self._server.workspace.text_documents
+        if uri not in documents or documents[uri].source != text:
+            return  # changed while it was being checked: the newer text's own check publishes
+        positions = Positions(self._server.workspace.position_codec, analysis.lines)
+        settings = self._settings(uri)
+        items = [to_lsp(d, analysis, positions) for d in analysis.diagnostics if settings.reports(d)]
+        self._server.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri=uri, diagnostics=items, version=version))
+        if self._pending.get(uri) is asyncio.current_task():
+            del self._pending[uri]

@@ -1,0 +1,163 @@
+"""The language server: documents in a workspace, diagnostics on open, change and save, and one
+small handler per LSP method, each handing over to a feature module.
+
+Every request works on the analysis of the document's current text (started
+in a worker thread, shared with the diagnostics of the same text), so answers
+never lag behind the text the editor shows.
+"""
+
+from __future__ import annotations
+
+from importlib import metadata
+
+from lsprotocol import types
+from pygls.exceptions import JsonRpcInvalidRequest
+from pygls.lsp.server import LanguageServer
+from pygls.uris import to_fs_path
+
+from edsconv.lsp import actions, completion, hover, navigation, symbols
+from edsconv.lsp.analysis import Analyses, Analysis
+from edsconv.lsp.diagnostics import CHANGE_DELAY, Publisher
+from edsconv.lsp.positions import Positions
+from edsconv.lsp.settings import Settings, settings_for
+
+NAME = "edsconv"
+
+
+class EdsLanguageServer(LanguageServer):
+    def __init__(self) -> None:
+        try:
+            version = metadata.version("edsconv")
+        except metadata.PackageNotFoundError:
+            version = "0"
+        super().__init__(NAME, version, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        self.analyses = Analyses()
+        self.publisher = Publisher(self, self.analyses, self.settings)
+
+    def settings(self, uri: str) -> Settings:
+        folders = [to_fs_path(folder.uri) or "" for folder in self.workspace.folders.values()]
+        return settings_for(to_fs_path(uri), folders)
+
+    async def current(self, uri: str) -> tuple[Analysis, Positions]:
+        """The analysis of the document's text as it is now, and its position converter."""
+        document = self.workspace.get_text_document(uri)
+        analysis = await self.analyses.of(uri, document.source, document.version, document.path)
+        return analysis, Positions(self.workspace.position_codec, analysis.lines)
+
+
+def create_server() -> EdsLanguageServer:
+    """A server with every feature registered; ``start_io()`` runs it on stdin/stdout."""
+    server = EdsLanguageServer()
+    _register_documents(server)
+    _register_reading(server)
+    _register_editing(server)
+    return server
+
+
+def _register_documents(server: EdsLanguageServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
+    def did_open(ls: EdsLanguageServer, params: types.DidOpenTextDocumentParams) -> None:
+        ls.publisher.schedule(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
+    def did_change(ls: EdsLanguageServer, params: types.DidChangeTextDocumentParams) -> None:
+        ls.publisher.schedule(params.text_document.uri, CHANGE_DELAY)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
+    def did_save(ls: EdsLanguageServer, params: types.DidSaveTextDocumentParams) -> None:
+        ls.publisher.schedule(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
+    def did_close(ls: EdsLanguageServer, params: types.DidCloseTextDocumentParams) -> None:
+        ls.publisher.clear(params.text_document.uri)
+        ls.analyses.forget(params.text_document.uri)
+
+
+def _register_reading(server: EdsLanguageServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_HOVER)
+    async def on_hover(ls: EdsLanguageServer, params: types.HoverParams) -> types.Hover | None:
+        analysis, positions = await ls.current(params.text_document.uri)
+        found = hover.hover(analysis, *positions.from_client(params.position))
+        if found is None:
+            return None
+        text, span = found
+        return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, text), positions.range(*span))
+
+    @server.feature(types.TEXT_DOCUMENT_DEFINITION)
+    async def on_definition(ls: EdsLanguageServer, params: types.DefinitionParams) -> types.Location | None:
+        analysis, positions = await ls.current(params.text_document.uri)
+        span = navigation.definition(analysis, *positions.from_client(params.position))
+        return None if span is None else types.Location(params.text_document.uri, positions.range(*span))
+
+    @server.feature(types.TEXT_DOCUMENT_REFERENCES)
+    async def on_references(ls: EdsLanguageServer, params: types.ReferenceParams) -> list[types.Location]:
+        analysis, positions = await ls.current(params.text_document.uri)
+        spans = navigation.references(analysis, *positions.from_client(params.position),
+                                      params.context.include_declaration)
+        return [types.Location(params.text_document.uri, positions.range(*span)) for span in spans]
+
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+    async def on_symbols(ls: EdsLanguageServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
+        analysis, positions = await ls.current(params.text_document.uri)
+        return symbols.document_symbols(analysis, positions)
+
+    @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=["[", ","]))
+    async def on_completion(ls: EdsLanguageServer, params: types.CompletionParams) -> types.CompletionList:
+        analysis, positions = await ls.current(params.text_document.uri)
+        items = completion.completions(analysis, *positions.from_client(params.position))
+        return types.CompletionList(is_incomplete=False, items=items)
+
+
+def _register_editing(server: EdsLanguageServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
+    async def on_prepare_rename(ls: EdsLanguageServer,
+                                params: types.PrepareRenameParams) -> types.PrepareRenamePlaceholder | None:
+        analysis, positions = await ls.current(params.text_document.uri)
+        found = navigation.target_at(analysis, *positions.from_client(params.position))
+        if found is None:
+            return None
+        return types.PrepareRenamePlaceholder(positions.range(*navigation.span_of(found)), found.target)
+
+    @server.feature(types.TEXT_DOCUMENT_RENAME)
+    async def on_rename(ls: EdsLanguageServer, params: types.RenameParams) -> types.WorkspaceEdit:
+        analysis, positions = await ls.current(params.text_document.uri)
+        try:
+            edits = navigation.rename(analysis, *positions.from_client(params.position), params.new_name)
+        except navigation.RenameRefused as refusal:
+            raise JsonRpcInvalidRequest(str(refusal)) from None
+        return types.WorkspaceEdit(changes={params.text_document.uri: [
+            types.TextEdit(positions.range(*span), text) for span, text in edits]})
+
+    @server.feature(types.TEXT_DOCUMENT_FORMATTING)
+    async def on_formatting(ls: EdsLanguageServer, params: types.DocumentFormattingParams) -> list[types.TextEdit]:
+        analysis, positions = await ls.current(params.text_document.uri)
+        text = actions.formatted(analysis)
+        if text is None or text == analysis.text:
+            return []
+        end = (len(analysis.lines) + 1, 1) if analysis.text.endswith(("\n", "\r")) else \
+            (len(analysis.lines), len(analysis.line_text(len(analysis.lines))) + 1)
+        return [types.TextEdit(positions.range(1, 1, *end), text)]
+
+    @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
+                    types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
+    async def on_code_action(ls: EdsLanguageServer, params: types.CodeActionParams) -> list[types.CodeAction]:
+        analysis, positions = await ls.current(params.text_document.uri)
+        found = []
+        for diagnostic in params.context.diagnostics:
+            if diagnostic.source != "edsconv" or not isinstance(diagnostic.code, str):
+                continue
+            line, column = positions.from_client(diagnostic.range.start)
+            fixes = actions.lint_fixes(analysis, diagnostic.code, line, column)
+            suppress = actions.suppression(analysis, diagnostic.code, line, column)
+            found += [_code_action(fix, diagnostic, params.text_document.uri, positions, preferred=True)
+                      for fix in fixes]
+            if suppress is not None:
+                found.append(_code_action(suppress, diagnostic, params.text_document.uri, positions))
+        return found
+
+
+def _code_action(fix: actions.Fix, diagnostic: types.Diagnostic, uri: str, positions: Positions,
+                 preferred: bool = False) -> types.CodeAction:
+    edits = [types.TextEdit(positions.range(e.line, e.column, e.end_line, e.end_column), e.text) for e in fix.edits]
+    return types.CodeAction(title=fix.title, kind=types.CodeActionKind.QuickFix, diagnostics=[diagnostic],
+                            edit=types.WorkspaceEdit(changes={uri: edits}), is_preferred=preferred or None)

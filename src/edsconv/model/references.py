@@ -1,0 +1,151 @@
+"""Every place in an EDS that names an entry, with its position: for go-to-definition, find-references, rename.
+
+The semantic model resolves references (:func:`edsconv.model.build.iter_references`:
+group members, assembly members, connection RPI/size/format, the chassis
+SlotDisplayRule); this module adds what an editor needs beyond the model: where
+each one is written, the ``[ParamN]`` / ``ParamN`` substitutions inside path
+strings (C.4.1.4.9.13), the entries paired with a parameter by number (EnumN
+and ParamN, ProxyParamSizeAdderN and ProxyParamN, Table C.13 and C.4.1.5.3.1),
+and the defining keywords themselves.
+
+Scaling links (ParamN fields 17-20) hold parameter instance numbers, which the
+model keeps as plain integers; they are not listed here.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+
+from edsconv import spec_tables as tables
+from edsconv.eds.syntax import EdsFile, Entry, String
+from edsconv.model import Device, Reference
+from edsconv.model.build import iter_references
+
+#: A parameter substitution inside a path string, bracketed or not (C.4.1.4.9.13).
+_PATH_REFERENCE = re.compile(r"(?<![A-Za-z0-9_])((?:Proxy)?Param)([1-9][0-9]*)(?![A-Za-z0-9_])")
+
+
+@dataclass(frozen=True, slots=True)
+class Occurrence:
+    """A span of the EDS text that names the entry ``target``.
+
+    The span holds ``prefix`` followed by the number of the target (``Param3``,
+    ``Enum3``), or only the number where the text names it by number (``prefix``
+    is then empty: the members of a GroupN).
+    """
+
+    target: str
+    line: int
+    column: int
+    end_column: int
+    prefix: str
+    #: "definition", "paired entry", "group member", "assembly member", "connection", "path", "slot display rule"
+    kind: str
+    #: the keyword of the entry the span is written in
+    entry: str
+
+    def renamed(self, number: int) -> str:
+        """The text of the span when the target is renumbered to ``number``."""
+        return f"{self.prefix}{number}"
+
+
+def definitions(device: Device) -> dict[str, Entry]:
+    """The entries that references can name, by keyword (parameters, assemblies,
+    connections, and numbered entries the 2003 text does not define such as AssemExaN)."""
+    found: dict[str, Entry] = {}
+    for records in (device.parameters, device.assemblies, device.connections):
+        for keyword, record in records.items():
+            if record.entry is not None:
+                found[keyword] = record.entry
+    for entries in device.extra_entries.values():
+        for generic in entries:
+            if generic.entry is not None and tables.split_numbered(generic.keyword)[1] and generic.keyword not in found:
+                found[generic.keyword] = generic.entry
+    return found
+
+
+def occurrences(eds: EdsFile, device: Device, lines: Sequence[str]) -> list[Occurrence]:
+    """Every span naming an entry, definitions included, in no particular order.
+
+    ``lines`` are the lines of the text ``eds`` was read from (line ends may stay
+    on them); they locate substitutions inside multi-part path strings.
+    """
+    found = [_keyword_span(entry, keyword, "definition") for keyword, entry in definitions(device).items()]
+    found += _paired_entries(eds)
+    section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
+    found += [_reference_span(reference, section_of.get(id(reference.entry), ""))
+              for reference in iter_references(device)
+              if reference.entry is not None and reference.field_index < len(reference.entry.fields)]
+    found += _path_references(eds, lines)
+    return found
+
+
+def references_to(target: str, spans: Sequence[Occurrence]) -> list[Occurrence]:
+    """The spans naming ``target``, in document order."""
+    return sorted((s for s in spans if s.target == target), key=lambda s: (s.line, s.column))
+
+
+def occurrence_at(spans: Sequence[Occurrence], line: int, column: int) -> Occurrence | None:
+    """The span touching ``line``:``column`` (a cursor just after a word still touches it)."""
+    return next((s for s in spans if s.line == line and s.column <= column <= s.end_column), None)
+
+
+def _keyword_span(entry: Entry, target: str, kind: str) -> Occurrence:
+    prefix = tables.split_numbered(entry.keyword)[0]
+    return Occurrence(target, entry.line, entry.column, entry.column + len(entry.keyword), prefix, kind,
+                      entry.keyword)
+
+
+def _paired_entries(eds: EdsFile) -> Iterator[Occurrence]:
+    for section in eds.sections:
+        for entry in section.entries:
+            spec = tables.entry_spec(section.name, entry.keyword)
+            if spec is not None and spec.pairs_with:
+                number = tables.split_numbered(entry.keyword)[1]
+                yield _keyword_span(entry, f"{spec.pairs_with}{number}", "paired entry")
+
+
+_KIND_BY_SECTION = {"Groups": "group member", "Assembly": "assembly member", "Connection Manager": "connection",
+                    "Modular": "slot display rule"}
+
+
+def _reference_span(reference: Reference, section: str) -> Occurrence:
+    entry = reference.entry
+    item = entry.fields[reference.field_index]
+    raw = item.raw or ""
+    by_number = not raw.startswith(reference.family)
+    text = raw if by_number else reference.keyword
+    line, column = item.line, item.column
+    return Occurrence(reference.keyword, line, column, column + len(text), "" if by_number else reference.family,
+                      _KIND_BY_SECTION.get(section, "reference"), entry.keyword)
+
+
+def _path_references(eds: EdsFile, lines: Sequence[str]) -> Iterator[Occurrence]:
+    """``[ParamN]`` and ``ParamN`` inside the path strings of every entry whose field is an EPATH."""
+    for section in eds.sections:
+        for entry in section.entries:
+            strings = [(i, item) for i, item in enumerate(entry.fields)
+                       if isinstance(item.value, String) and "Param" in item.value.raw]
+            spec = tables.entry_spec(section.name, entry.keyword) if strings else None
+            for index, item in strings if spec is not None else ():
+                field_spec = spec.field_at(index + 1)
+                if field_spec is None or "EPATH" not in field_spec.alternatives:
+                    continue
+                for line, column, part in _string_parts(item.value, item.line, item.column, lines):
+                    for match in _PATH_REFERENCE.finditer(part):
+                        yield Occurrence(match.group(1) + match.group(2), line, column + match.start(),
+                                         column + match.end(), match.group(1), "path", entry.keyword)
+
+
+def _string_parts(value: String, line: int, column: int, lines: Sequence[str]) -> Iterator[tuple[int, int, str]]:
+    """Each quoted part of a string with the line and column where it is written."""
+    for part in value.parts:
+        while line <= len(lines):
+            found = lines[line - 1].find(part, column - 1)
+            if found >= 0:
+                yield line, found + 1, part
+                column = found + 1 + len(part)
+                break
+            line, column = line + 1, 1

@@ -1,0 +1,225 @@
+"""``edsconv lsp`` end to end: a real LSP client (pytest-lsp) drives the server over stdio."""
+
+from __future__ import annotations
+
+import sys
+
+import pytest
+
+pytest.importorskip("pygls")
+pytest_lsp = pytest.importorskip("pytest_lsp")
+
+from lsprotocol import types  # noqa: E402
+from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
+
+import edsconv  # noqa: E402
+from conftest import REPO  # noqa: E402
+from edsconv.eds.canonical import write_canonical  # noqa: E402
+
+pytestmark = pytest.mark.asyncio(loop_scope="module")
+
+EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text()
+#: io_adapter.eds with Assem100's member reference Param2 (line 95) changed to the undefined Param9
+BROKEN = EXAMPLE.replace("8,Param2,\n                8,;", "8,Param9,\n                8,;")
+INITIALIZE: dict[str, types.InitializeResult] = {}
+
+
+SERVER = ClientServerConfig(server_command=[sys.executable, "-m", "edsconv", "lsp"])
+
+
+@pytest_lsp.fixture(scope="module", config=SERVER)
+async def client(lsp_client: LanguageClient):
+    capabilities = types.ClientCapabilities(text_document=types.TextDocumentClientCapabilities(
+        rename=types.RenameClientCapabilities(prepare_support=True)))
+    INITIALIZE["result"] = await lsp_client.initialize_session(types.InitializeParams(
+        capabilities=capabilities, root_uri=REPO.as_uri()))
+    yield
+    await lsp_client.shutdown_session()
+
+
+async def open_document(client: LanguageClient, name: str, text: str) -> tuple[str, list[types.Diagnostic]]:
+    """Open ``text`` as a new document and wait for its first diagnostics."""
+    uri = f"file:///edsconv-lsp-test/{name}.eds"
+    client.text_document_did_open(types.DidOpenTextDocumentParams(
+        types.TextDocumentItem(uri=uri, language_id="eds", version=1, text=text)))
+    return uri, await diagnostics_of(client, uri)
+
+
+async def diagnostics_of(client: LanguageClient, uri: str) -> list[types.Diagnostic]:
+    while True:
+        params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if params.uri == uri:
+            return list(params.diagnostics)
+
+
+def replace(uri: str, version: int, line: int, start: int, end: int, text: str) -> types.DidChangeTextDocumentParams:
+    return types.DidChangeTextDocumentParams(
+        types.VersionedTextDocumentIdentifier(version=version, uri=uri),
+        [types.TextDocumentContentChangePartial(
+            range=types.Range(types.Position(line, start), types.Position(line, end)), text=text)])
+
+
+def doc(uri: str) -> types.TextDocumentIdentifier:
+    return types.TextDocumentIdentifier(uri=uri)
+
+
+async def test_initialize_announces_every_feature(client: LanguageClient):
+    capabilities = INITIALIZE["result"].capabilities
+    assert INITIALIZE["result"].server_info.name == "edsconv"
+    assert capabilities.hover_provider and capabilities.definition_provider and capabilities.references_provider
+    assert capabilities.rename_provider.prepare_provider
+    assert capabilities.document_formatting_provider and capabilities.document_symbol_provider
+    assert "[" in capabilities.completion_provider.trigger_characters
+    assert list(capabilities.code_action_provider.code_action_kinds) == [types.CodeActionKind.QuickFix]
+    assert capabilities.text_document_sync.change is types.TextDocumentSyncKind.Incremental
+    assert capabilities.text_document_sync.save
+
+
+async def test_a_broken_file_gets_its_diagnostic_with_code_clause_range_and_link(client: LanguageClient):
+    uri, diagnostics = await open_document(client, "broken", BROKEN)
+    (diagnostic,) = diagnostics
+    assert diagnostic.code == "EDS301"
+    assert diagnostic.severity is types.DiagnosticSeverity.Error
+    assert diagnostic.source == "edsconv"
+    assert diagnostic.message == "Assem100 names Param9, which is not defined [C.4.1.4.8]"
+    assert diagnostic.range == types.Range(types.Position(94, 18), types.Position(94, 24))
+    assert diagnostic.code_description.href.endswith("rules.md#eds301")
+
+
+async def test_a_change_that_fixes_the_fault_clears_it_and_the_latest_text_wins(client: LanguageClient):
+    uri, diagnostics = await open_document(client, "fixed-by-change", BROKEN)
+    assert [d.code for d in diagnostics] == ["EDS301"]
+    # Two quick changes: the first breaks another reference, the second repairs both. Only the
+    # text after the last one is checked: one publication, for version 3, with nothing in it.
+    client.text_document_did_change(replace(uri, 2, 108, 18, 24, "Param8"))
+    client.text_document_did_change(types.DidChangeTextDocumentParams(
+        types.VersionedTextDocumentIdentifier(version=3, uri=uri),
+        [types.TextDocumentContentChangePartial(
+            range=types.Range(types.Position(94, 18), types.Position(94, 24)), text="Param2"),
+         types.TextDocumentContentChangePartial(
+            range=types.Range(types.Position(108, 18), types.Position(108, 24)), text="Param2")]))
+    params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+    assert (params.uri, params.version, list(params.diagnostics)) == (uri, 3, [])
+
+
+async def test_save_checks_again(client: LanguageClient):
+    uri, _ = await open_document(client, "saved", EXAMPLE)
+    client.text_document_did_change(replace(uri, 2, 94, 18, 24, "Param9"))
+    client.text_document_did_save(types.DidSaveTextDocumentParams(doc(uri)))
+    assert [d.code for d in await diagnostics_of(client, uri)] == ["EDS301"]
+
+
+async def test_hover_explains_references_fields_and_bits(client: LanguageClient):
+    uri, _ = await open_document(client, "hover", EXAMPLE)
+    on_reference = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(94, 20)))
+    assert "**Param2** 'Input Filter': USINT 0xC6" in on_reference.contents.value
+    assert "Member Reference" in on_reference.contents.value
+    assert on_reference.range == types.Range(types.Position(94, 18), types.Position(94, 24))
+    on_trigger = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(113, 20)))
+    assert "- transport type: exclusive-owner" in on_trigger.contents.value
+    on_keyword = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(28, 10)))
+    assert on_keyword.contents.value.startswith("**ParamN** (C.4.1.4.6, Table C.13)")
+    on_field = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(15, 20)))
+    assert on_field.contents.value.startswith("**ProdType field 1: Device Type** (UINT), required")
+    assert "Range: 0 .. 65535 (UINT)" in on_field.contents.value
+    on_path = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(121, 22)))
+    assert "Path: class 0x04 (Assembly), instance 0x97, connection point 0x96" in on_path.contents.value
+    on_data_type = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(32, 18)))
+    assert "`0xC8`: **UDINT**" in on_data_type.contents.value
+    nothing = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(2, 0)))
+    assert nothing is None
+
+
+async def test_definition_and_references_across_sections(client: LanguageClient):
+    uri, _ = await open_document(client, "navigation", EXAMPLE)
+    found = await client.text_document_definition_async(types.DefinitionParams(doc(uri), types.Position(94, 20)))
+    assert found == types.Location(uri, types.Range(types.Position(41, 8), types.Position(41, 14)))
+    locations = await client.text_document_references_async(types.ReferenceParams(
+        text_document=doc(uri), position=types.Position(41, 10),
+        context=types.ReferenceContext(include_declaration=True)))
+    assert [(loc.range.start.line, loc.range.start.character) for loc in locations] == [
+        (41, 8), (83, 37), (94, 18), (108, 18)]
+    format_reference = await client.text_document_definition_async(
+        types.DefinitionParams(doc(uri), types.Position(116, 28)))
+    assert format_reference.range.start == types.Position(88, 8)  # Assem100
+
+
+async def test_rename_rewrites_every_reference_and_refuses_an_existing_name(client: LanguageClient):
+    uri, _ = await open_document(client, "rename", EXAMPLE)
+    prepared = await client.text_document_prepare_rename_async(
+        types.PrepareRenameParams(doc(uri), types.Position(67, 10)))
+    assert prepared.placeholder == "Param3"  # on Enum3: its parameter
+    edit = await client.text_document_rename_async(types.RenameParams(
+        text_document=doc(uri), position=types.Position(67, 10), new_name="Param12"))
+    edits = sorted(((e.range.start.line, e.range.start.character), e.new_text) for e in edit.changes[uri])
+    assert edits == [((54, 8), "Param12"), ((67, 8), "Enum12"), ((83, 40), "12"), ((109, 18), "Param12")]
+    with pytest.raises(Exception, match="Param2 exists already"):
+        await client.text_document_rename_async(types.RenameParams(
+            text_document=doc(uri), position=types.Position(67, 10), new_name="Param2"))
+
+
+async def test_formatting_gives_the_canonical_layout_and_nothing_for_syntax_errors(client: LanguageClient):
+    uri, _ = await open_document(client, "format", EXAMPLE)
+    options = types.FormattingOptions(tab_size=4, insert_spaces=True)
+    (edit,) = await client.text_document_formatting_async(types.DocumentFormattingParams(
+        text_document=doc(uri), options=options))
+    assert edit.new_text == write_canonical(edsconv.parse(EXAMPLE))
+    assert edit.range == types.Range(types.Position(0, 0), types.Position(EXAMPLE.count("\n"), 0))
+    broken_uri, _ = await open_document(client, "format-broken", EXAMPLE.replace("Revision = 1.1;", "Revision = 1.1"))
+    assert not await client.text_document_formatting_async(types.DocumentFormattingParams(
+        text_document=doc(broken_uri), options=options))
+
+
+async def completion_labels(client: LanguageClient, uri: str, line: int, character: int) -> dict[str, str | None]:
+    found = await client.text_document_completion_async(
+        types.CompletionParams(doc(uri), types.Position(line, character)))
+    return {item.label: item.detail for item in found.items}
+
+
+async def test_completion_offers_sections_keywords_numbers_types_and_references(client: LanguageClient):
+    blank = "        \n"
+    text = EXAMPLE.replace("[Port]", "[")
+    for entry in ("        Enum3 = 0,", "        Assem150 =", "        Connection2 ="):  # a blank line before each
+        text = text.replace(entry, blank + entry)
+    lines = text.splitlines()
+    uri, _ = await open_document(client, "completion", text)
+    blanks = [index for index, line in enumerate(lines) if line == blank.rstrip("\n")]
+    in_params, in_assembly, in_connections = [await completion_labels(client, uri, line, 8) for line in blanks]
+    assert {"Param5", "Enum4", "ProxyParam1"} <= set(in_params)
+    assert "Assem152" in in_assembly and "Revision" not in in_assembly
+    assert "Connection3" in in_connections
+    sections = await completion_labels(client, uri, lines.index("["), 1)
+    assert {"Port", "Modular"} <= set(sections) and "Params" not in sections
+    data_types = await completion_labels(client, uri, 32, 18)  # Param1 field 5, Data Type
+    assert data_types["0xC8"] == "UDINT" and data_types["0xCA"] == "REAL"
+    format_line = lines.index("                Param1,2,Assem150,      $ O=>T RPI, size, format")
+    formats = await completion_labels(client, uri, format_line, 28)  # Connection1 O=>T format
+    assert formats["Assem100"] == "Inputs" and formats["Param1"] == "RPI"
+
+
+async def test_code_action_suppresses_the_rule_on_the_entry(client: LanguageClient):
+    uri, (diagnostic,) = await open_document(client, "actions", BROKEN)
+    actions = await client.text_document_code_action_async(types.CodeActionParams(
+        text_document=doc(uri), range=diagnostic.range, context=types.CodeActionContext(diagnostics=[diagnostic])))
+    (action,) = actions
+    assert action.title.startswith("Suppress EDS301 here")
+    (edit,) = action.edit.changes[uri]
+    assert edit.range.start == types.Position(88, len("        Assem100 ="))
+    assert edit.new_text == " $ edsconv: ignore[EDS301]"
+
+
+async def test_document_symbols_name_parameters_and_assemblies(client: LanguageClient):
+    uri, _ = await open_document(client, "symbols", EXAMPLE)
+    found = await client.text_document_document_symbol_async(types.DocumentSymbolParams(doc(uri)))
+    assert [s.name for s in found][:4] == ["[File]", "[Device]", "[Device Classification]", "[Params]"]
+    params = {s.name: s.detail for s in found[3].children}
+    assert params == {"Param1": "RPI", "Param2": "Input Filter", "Param3": "Fault Action", "Enum3": None,
+                      "Param4": "Temperature Limit"}
+
+
+async def test_shutdown_ends_the_server():
+    own = await SERVER.start()
+    await own.initialize_session(types.InitializeParams(capabilities=types.ClientCapabilities()))
+    await own.shutdown_session()
+    assert own._server.returncode == 0
+    await own.stop()

@@ -57,7 +57,9 @@ def codes_by_file(reports) -> dict[str, list[str]]:
 
 def test_discovery_is_recursive_sorted_and_takes_explicit_files_whatever_their_suffix(tree: Path):
     found = [str(Path(p).relative_to(tree)) for p in lint.discover([tree])]
-    assert found == ["a.eds", "m_broken.eds", "sub/b.EDS", "sub/deeper/c.eds", "sub/n_canopen.eds", "z.eds"]
+    # any letter case of .eds: odd.Eds too; notes.txt is not an EDS
+    assert found == ["a.eds", "m_broken.eds", "odd.Eds", "sub/b.EDS", "sub/deeper/c.eds", "sub/n_canopen.eds",
+                     "z.eds"]
     assert lint.discover([tree / "notes.txt", tree / "a.eds", tree]) [:3] == [
         str(tree / "notes.txt"), str(tree / "a.eds"), str(tree / "m_broken.eds")]
 
@@ -67,9 +69,9 @@ def test_directory_with_a_broken_and_a_canopen_file_reports_every_file(tree: Pat
     assert result.return_value == 1
     document = json.loads(result.stdout)
     by_name = {Path(f["path"]).name: [d["code"] for d in f["diagnostics"]] for f in document["files"]}
-    assert by_name == {"a.eds": [], "m_broken.eds": ["EDS002"], "b.EDS": [], "c.eds": [],
+    assert by_name == {"a.eds": [], "m_broken.eds": ["EDS002"], "odd.Eds": ["EDS002"], "b.EDS": [], "c.eds": [],
                        "n_canopen.eds": ["EDS010"], "z.eds": []}
-    assert document["summary"] == {"files": 6, "errors": 2, "warnings": 0}
+    assert document["summary"] == {"files": 7, "errors": 3, "warnings": 0}
     assert all(f["error"] is None for f in document["files"])
 
 
@@ -81,7 +83,7 @@ def test_text_format_and_exit_codes(tmp_path: Path):
     result = run("lint", str(good), str(broken))
     assert result.return_value == 1
     (line,) = result.stdout.splitlines()
-    assert line.startswith(f"{broken}:{BROKEN_LINE}:{BROKEN_COLUMN}: EDS002 the entry is not ended by ';'")
+    assert line.startswith(f"{broken}:{BROKEN_LINE}:{BROKEN_COLUMN}: error: EDS002 the entry is not ended by ';'")
     assert line.endswith("[C.4.1.2.2.8]")
     assert result.stderr.strip() == "2 files: 1 errors, 0 warnings, 0 notes"
 
@@ -112,13 +114,13 @@ def test_warnings_as_errors_fails_and_prints_errors(tmp_path: Path):
 
 
 @pytest.mark.parametrize(("options", "expected"), [
-    ([], {"m_broken.eds": ["EDS002"], "n_canopen.eds": ["EDS010"]}),
+    ([], {"m_broken.eds": ["EDS002"], "odd.Eds": ["EDS002"], "n_canopen.eds": ["EDS010"]}),
     (["--select", "EDS010"], {"n_canopen.eds": ["EDS010"]}),
     (["--select", "eds01,XML"], {"n_canopen.eds": ["EDS010"]}),
     (["--ignore", "EDS0"], {}),
     (["--ignore", "EDS002", "--ignore", "EDS010"], {}),
-    (["--ignore", "EDS0", "--select", "EDS002"], {"m_broken.eds": ["EDS002"]}),
-    (["--select", "EDS0", "--ignore", "EDS01"], {"m_broken.eds": ["EDS002"]}),
+    (["--ignore", "EDS0", "--select", "EDS002"], {"m_broken.eds": ["EDS002"], "odd.Eds": ["EDS002"]}),
+    (["--select", "EDS0", "--ignore", "EDS01"], {"m_broken.eds": ["EDS002"], "odd.Eds": ["EDS002"]}),
     (["--select", "EDS010", "--ignore", "EDS010"], {}),
 ])
 def test_select_and_ignore_take_codes_and_prefixes(tree: Path, options: list[str], expected: dict):
@@ -149,28 +151,38 @@ def test_an_exception_on_one_file_gives_eds000_and_the_run_goes_on(tree: Path, m
 
     monkeypatch.setattr(lint, "analyse", failing)
     reports = lint.lint_paths([tree], jobs=1)
-    assert codes_by_file(reports) == {"a.eds": [], "m_broken.eds": ["EDS002"], "b.EDS": ["EDS000"], "c.eds": [],
-                                      "n_canopen.eds": ["EDS010"], "z.eds": []}
-    failed = reports[2]
+    assert codes_by_file(reports) == {"a.eds": [], "m_broken.eds": ["EDS002"], "odd.Eds": ["EDS002"],
+                                      "b.EDS": ["EDS000"], "c.eds": [], "n_canopen.eds": ["EDS010"], "z.eds": []}
+    failed = reports[3]
     assert failed.error.startswith("internal error RecursionError: maximum recursion depth exceeded")
     assert "please report it" in failed.diagnostics[0].message
 
 
 def test_an_unreadable_file_gives_eds000(tree: Path, monkeypatch):
-    real = lint.load
+    real = Path.read_bytes
 
-    def load(path):
-        if path.endswith("c.eds"):
+    def read_bytes(path: Path) -> bytes:
+        if path.name == "c.eds":
             raise PermissionError(13, "Permission denied")
         return real(path)
 
-    monkeypatch.setattr(lint, "load", load)
+    monkeypatch.setattr(Path, "read_bytes", read_bytes)
     result = run("lint", "--format", "json", str(tree))
     assert result.return_value == 1
     files = {Path(f["path"]).name: f for f in json.loads(result.stdout)["files"]}
     assert files["c.eds"]["error"] == "cannot read the file: Permission denied"
     assert [d["code"] for d in files["c.eds"]["diagnostics"]] == ["EDS000"]
-    assert len(files) == 6
+    assert len(files) == 7
+
+
+def test_a_dangling_symbolic_link_in_a_directory_is_reported_not_skipped(tmp_path: Path):
+    (tmp_path / "good.eds").write_bytes(GOOD)
+    (tmp_path / "gone.EDS").symlink_to(tmp_path / "deleted.eds")
+    result = run("lint", str(tmp_path))
+    assert result.return_value == 1
+    (line,) = result.stdout.splitlines()
+    assert line.startswith(f"{tmp_path / 'gone.EDS'}:0:0: error: EDS000 cannot read the file: it is a symbolic "
+                           f"link to {tmp_path / 'deleted.eds'}, which does not exist")
 
 
 def _die_on_broken(path: str, *selection):
@@ -199,7 +211,7 @@ def test_sarif_and_github_from_the_command(tree: Path, monkeypatch):
     sarif = json.loads(run("lint", "--format", "sarif", ".").stdout)
     validate_sarif(sarif)
     uris = [r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] for r in sarif["runs"][0]["results"]]
-    assert uris == ["m_broken.eds", "sub/n_canopen.eds"]
+    assert uris == ["m_broken.eds", "odd.Eds", "sub/n_canopen.eds"]
     github = run("lint", "--format", "github", ".")
     assert github.return_value == 1
     assert github.stdout.splitlines()[0].startswith(

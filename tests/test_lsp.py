@@ -208,6 +208,34 @@ async def test_code_action_suppresses_the_rule_on_the_entry(client: LanguageClie
     assert edit.new_text == " $ edsconv: ignore[EDS301]"
 
 
+async def test_code_action_applies_the_fix_lint_makes_and_the_fault_goes(client: LanguageClient):
+    fixable = EXAMPLE.replace("ProdCode = 1001;", "ProdCode = 01001;")
+    uri, (diagnostic,) = await open_document(client, "fixable", fixable)
+    assert diagnostic.code == "EDS103"
+    actions = await client.text_document_code_action_async(types.CodeActionParams(
+        text_document=doc(uri), range=diagnostic.range, context=types.CodeActionContext(diagnostics=[diagnostic])))
+    fix, suppress = actions
+    assert (fix.title, fix.is_preferred) == ("Write 1001 without leading zeros", True)
+    assert suppress.title.startswith("Suppress EDS103 here")
+    (edit,) = fix.edit.changes[uri]
+    line = EXAMPLE.splitlines().index("        ProdCode = 1001;")
+    assert (edit.range, edit.new_text) == (types.Range(types.Position(line, 19), types.Position(line, 24)), "1001")
+    client.text_document_did_change(types.DidChangeTextDocumentParams(
+        types.VersionedTextDocumentIdentifier(version=2, uri=uri),
+        [types.TextDocumentContentChangePartial(range=edit.range, text=edit.new_text)]))
+    assert await diagnostics_of(client, uri) == []
+
+
+async def test_an_inline_suppression_silences_the_rule_in_the_editor(client: LanguageClient):
+    suppressed = BROKEN.replace("        Assem100 =", "        Assem100 = $ edsconv: ignore[EDS301]")
+    _, diagnostics = await open_document(client, "suppressed", suppressed)
+    assert "EDS301" not in [d.code for d in diagnostics]
+    assert diagnostics == []
+    _, unused = await open_document(client, "unused", EXAMPLE.replace("        Assem100 =",
+                                                                       "        Assem100 = $ edsconv: ignore[EDS301]"))
+    assert [d.code for d in unused] == ["EDS099"]
+
+
 async def test_document_symbols_name_parameters_and_assemblies(client: LanguageClient):
     uri, _ = await open_document(client, "symbols", EXAMPLE)
     found = await client.text_document_document_symbol_async(types.DocumentSymbolParams(doc(uri)))

@@ -30,10 +30,12 @@ def sample(root: Path) -> list[FileReport]:
     ]
 
 
-def test_text_is_path_line_column_code_message_clause(tmp_path: Path):
-    text = report.format_text(sample(tmp_path))
-    assert text.splitlines()[0] == f"{tmp_path}/dir/bad file.eds:3:7: EDS001 unexpected 'x': expected ';' [C.4.1.2.2]"
-    assert len(text.splitlines()) == 4
+def test_text_is_path_line_column_severity_code_message_clause(tmp_path: Path):
+    lines = report.format_text(sample(tmp_path)).splitlines()
+    assert lines[0] == f"{tmp_path}/dir/bad file.eds:3:7: error: EDS001 unexpected 'x': expected ';' [C.4.1.2.2]"
+    assert lines[1].startswith(f"{tmp_path}/dir/bad file.eds:9:1: warning: EDS005 ")
+    assert lines[2].startswith(f"{tmp_path}/dir/bad file.eds:1:1: info: XML005 ")
+    assert len(lines) == 4
 
 
 def test_json_shape_is_files_with_diagnostics_and_a_summary(tmp_path: Path):
@@ -101,14 +103,22 @@ def test_sarif_help_uri_points_at_the_rule_heading_in_docs(monkeypatch):
     assert by_id["EDS001"]["helpUri"] == "https://example.org/edsconv/blob/main/docs/rules.md#eds001"
 
 
-def test_github_annotations(tmp_path: Path):
+def test_github_annotations_errors_first_then_warnings_then_notes_and_a_summary(tmp_path: Path):
     lines = report.format_github(sample(tmp_path), root=tmp_path).splitlines()
     assert lines[0] == ("::error file=dir/bad file.eds,line=3,col=7,title=EDS001::"
                         "unexpected 'x': expected ';' [C.4.1.2.2]")
-    assert lines[1].startswith("::warning file=dir/bad file.eds,line=9,col=1,title=EDS005::")
-    assert lines[2].startswith("::notice ")
-    # no line: the annotation is on the file
-    assert lines[3] == "::error file=/elsewhere/broken.eds,title=EDS000::cannot read the file: Permission denied"
+    # no line: the annotation is on the file; errors of later files still come before any warning
+    assert lines[1] == "::error file=/elsewhere/broken.eds,title=EDS000::cannot read the file: Permission denied"
+    assert lines[2].startswith("::warning file=dir/bad file.eds,line=9,col=1,title=EDS005::")
+    assert lines[3].startswith("::notice ")
+    assert lines[4] == "edsconv: 3 files: 2 errors, 1 warnings, 1 notes"
+    assert len(lines) == 5
+
+
+def test_github_annotation_carries_the_end_of_a_span():
+    d = Diagnostic("EDS103", "leading zeros", 4, 20, "a.eds", Severity.ERROR, "", 4, 25)
+    assert report.format_github([FileReport("a.eds", [d])]).splitlines()[0] == \
+        "::error file=a.eds,line=4,col=20,endColumn=25,title=EDS103::leading zeros"
 
 
 def test_github_escaping():
@@ -116,7 +126,7 @@ def test_github_escaping():
     assert report.escape_property("C:\\x,y%\n") == "C%3A\\x%2Cy%25%0A"
     path = "odd,name: 50%.eds"
     d = Diagnostic("EDS001", "line one\nline two", 2, 3, path)
-    (line,) = report.format_github([FileReport(path, [d])]).splitlines()
+    (line, _) = report.format_github([FileReport(path, [d])]).splitlines()
     assert line == "::error file=odd%2Cname%3A 50%25.eds,line=2,col=3,title=EDS001::line one%0Aline two"
 
 

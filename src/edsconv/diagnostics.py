@@ -30,6 +30,17 @@ class Severity(enum.IntEnum):
         return self.name.lower()
 
 
+class FixSafety(enum.StrEnum):
+    """What ``edsconv lint --fix`` may do about a rule's faults (ruff's fix safety)."""
+
+    #: no fix is known
+    NONE = "none"
+    #: exactly one fix keeps the file's meaning: ``--fix`` applies it (when the fault allows one)
+    SAFE = "safe"
+    #: a fix exists but may change what the file means: shown, never applied
+    UNSAFE = "unsafe"
+
+
 #: How a rule's documentation introduces its two examples: one that breaks the rule, one that does not.
 BAD_GOOD = ("Bad", "Good")
 #: For rules whose first example is not a mistake as such (information, or a condition a file may meet).
@@ -66,6 +77,7 @@ class Rule:
     good: str = ""
     labels: tuple[str, str] = BAD_GOOD
     aliases: tuple[Alias, ...] = ()
+    fix: FixSafety = FixSafety.NONE
 
     def as_dict(self) -> dict:
         """The full record, as ``edsconv rules --format json`` prints it."""
@@ -79,6 +91,7 @@ class Rule:
             "explanation": self.explanation,
             "examples": {"labels": list(self.labels), "bad": self.bad, "good": self.good},
             "aliases": [{"code": a.code, "note": a.note} for a in self.aliases],
+            "fix": str(self.fix),
         }
 
 
@@ -87,8 +100,11 @@ _CODE = re.compile(r"(EDS|XML)[0-9]{3}")
 
 def rule(code: str, severity: Severity, clause: str, summary: str, *, explanation: str, bad: str, good: str,
          import_blocking: bool = False, clause_note: str = "", labels: tuple[str, str] = BAD_GOOD,
-         aliases: dict[str, str] | None = None) -> Rule:
+         aliases: dict[str, str] | None = None, fix: str = "none") -> Rule:
     """A rule with its documentation; the texts are dedented, so they may be indented like the code.
+
+    ``fix`` is "safe" when ``edsconv lint --fix`` (:mod:`edsconv.fix`) repairs the fault, "unsafe" when a
+    repair exists but is never applied.
 
     Defining a rule does not register it: :func:`load_rules` collects the rules of :data:`RULE_MODULES`.
     """
@@ -96,7 +112,8 @@ def rule(code: str, severity: Severity, clause: str, summary: str, *, explanatio
         if not _CODE.fullmatch(named):
             raise ValueError(f"rule code {named!r} is not EDSnnn or XMLnnn")
     return Rule(code, severity, clause, summary, import_blocking, clause_note, _text(explanation), _text(bad),
-                _text(good), labels, tuple(Alias(alias, _text(note)) for alias, note in (aliases or {}).items()))
+                _text(good), labels, tuple(Alias(alias, _text(note)) for alias, note in (aliases or {}).items()),
+                FixSafety(fix))
 
 
 def block(code: str, language: str = "") -> str:
@@ -109,7 +126,8 @@ def _text(markdown: str) -> str:
 
 
 #: Every module that defines rules: :func:`load_rules` collects their module-level :class:`Rule` objects.
-RULE_MODULES = ("edsconv.lint", "edsconv.eds.reader_rules", "edsconv.model.values", "edsconv.model.build",
+RULE_MODULES = ("edsconv.lint", "edsconv.suppress", "edsconv.eds.reader_rules", "edsconv.model.values",
+                "edsconv.model.build",
                 "edsconv.checks.structure_rules", "edsconv.checks.entity_rules", "edsconv.merge",
                 "edsconv.xml.validate", "edsconv.xml.convert", "edsconv.xml.device")
 
@@ -202,10 +220,11 @@ class Diagnostic:
         return cls(rule_.code, message, line, column, path, rule_.severity, rule_.clause, end_line, end_column)
 
     def format(self) -> str:
-        """``path:line:col: CODE message [clause]`` as flake8 and ruff print it."""
+        """``path:line:col: severity: CODE message [clause]``, as compilers print it (editors' problem matchers
+        read the severity there)."""
         where = f"{self.path or '<string>'}:{self.line}:{self.column}"
         clause = f" [{self.clause}]" if self.clause else ""
-        return f"{where}: {self.code} {self.message}{clause}"
+        return f"{where}: {self.severity}: {self.code} {self.message}{clause}"
 
     def as_dict(self) -> dict:
         return {

@@ -40,6 +40,10 @@ class FileReport:
     path: str
     diagnostics: list[Diagnostic] = field(default_factory=list)
     error: str | None = None
+    #: what ``--fix`` repaired (or, with ``--diff``, would repair)
+    fixed: list[Diagnostic] = field(default_factory=list)
+    #: ``--diff``: the repair as a unified diff
+    diff: str = ""
 
     def as_dict(self) -> dict:
         return {"path": self.path, "diagnostics": [d.as_dict() for d in self.diagnostics], "error": self.error}
@@ -56,7 +60,7 @@ def summarise(reports: Sequence[Report]) -> dict:
 
 # --- text and json ----------------------------------------------------------------
 def format_text(reports: Iterable[Report]) -> str:
-    """``path:line:col: CODE message [clause]``, one line per diagnostic."""
+    """``path:line:col: severity: CODE message [clause]``, one line per diagnostic."""
     return "".join(d.format() + "\n" for report in reports for d in report.diagnostics)
 
 
@@ -121,7 +125,7 @@ def sarif_document(reports: Sequence[Report], root: Path | None = None) -> dict:
             physical: dict = {"artifactLocation": location}
             if d.line > 0:
                 physical["region"] = _region(d)
-            result = {
+            result: dict = {
                 "ruleId": d.code,
                 "level": _SARIF_LEVEL[d.severity],
                 "message": {"text": d.message},
@@ -185,25 +189,41 @@ def escape_property(text: str) -> str:
     return escape_data(text).replace(":", "%3A").replace(",", "%2C")
 
 
-def format_github(reports: Iterable[Report], root: Path | None = None) -> str:
-    """``::error file=…,line=…,col=…,title=EDS001::message [clause]``, one line per diagnostic.
+def format_github(reports: Sequence[Report], root: Path | None = None) -> str:
+    """``::error file=…,line=…,col=…,title=EDS001::message [clause]``, one line per diagnostic, then a summary.
 
+    Errors come first, then warnings, then notes (each in file order): GitHub shows only the first
+    ten annotations of each kind a step makes, and the summary line says how many there are in all.
     File paths are relative to ``root`` (the cwd: a workflow's repository checkout) when below it.
     """
     root = Path(os.path.abspath(root or Path.cwd()))
-    lines = []
-    for report in reports:
-        path = relative_to(report.path, root).as_posix()
-        for d in report.diagnostics:
-            properties = [f"file={escape_property(path)}"]
-            if d.line > 0:
-                properties.append(f"line={d.line}")
-                if d.column > 0:
-                    properties.append(f"col={d.column}")
-            properties.append(f"title={escape_property(d.code)}")
-            message = f"{d.message} [{d.clause}]" if d.clause else d.message
-            lines.append(f"::{_GITHUB_COMMAND[d.severity]} {','.join(properties)}::{escape_data(message)}\n")
-    return "".join(lines)
+    found = [(relative_to(report.path, root).as_posix(), d) for report in reports for d in report.diagnostics]
+    found.sort(key=lambda item: -item[1].severity)  # stable: file order within a severity
+    lines = [_annotation(path, d) for path, d in found]
+    return "".join(lines) + f"edsconv: {counts(reports)}\n"
+
+
+def _annotation(path: str, d: Diagnostic) -> str:
+    properties = [f"file={escape_property(path)}"]
+    if d.line > 0:
+        properties.append(f"line={d.line}")
+        if d.column > 0:
+            properties.append(f"col={d.column}")
+        if d.end_line and d.end_line == d.line and d.end_column:
+            properties.append(f"endColumn={d.end_column}")
+        elif d.end_line:
+            properties.append(f"endLine={d.end_line}")
+    properties.append(f"title={escape_property(d.code)}")
+    message = f"{d.message} [{d.clause}]" if d.clause else d.message
+    return f"::{_GITHUB_COMMAND[d.severity]} {','.join(properties)}::{escape_data(message)}\n"
+
+
+def counts(reports: Sequence[Report]) -> str:
+    """``3 files: 1 errors, 2 warnings, 0 notes``: the summary line of a run."""
+    diagnostics = [d for report in reports for d in report.diagnostics]
+    number = {severity: sum(d.severity is severity for d in diagnostics) for severity in Severity}
+    return (f"{len(reports)} file{'s' if len(reports) != 1 else ''}: {number[Severity.ERROR]} errors, "
+            f"{number[Severity.WARNING]} warnings, {number[Severity.INFO]} notes")
 
 
 FORMATTERS = {"text": format_text, "json": format_json, "sarif": format_sarif, "github": format_github}

@@ -12,7 +12,8 @@ import json
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from edsconv.diagnostics import Alias, Rule, RuleRegistry, Selection, load_rules
+from edsconv.diagnostics import Alias, FixSafety, Rule, RuleRegistry, Selection, load_rules
+from edsconv.fix import fix_documentation
 
 PAGE_INTRO = """\
 <!-- Generated from the rule definitions by `edsconv rules --format markdown`: edit those, not this file. -->
@@ -29,6 +30,11 @@ heading here, which SARIF output links to.
 Severity: **error** fails `edsconv lint` (exit 1), **warning** fails it only
 with `--warnings-as-errors`, **info** never does. *Import-blocking* marks
 problems for which a major engineering tool refuses to import the file.
+
+*Fix: safe* marks rules whose faults `edsconv lint --fix` repairs (`*` in
+`edsconv rules`): each such fault has exactly one repair that keeps what the
+file means. Some of these rules can be repaired only in the cases the rule's
+text names.
 
 Select or silence rules by code or prefix: `--select EDS0`, `--ignore EDS005,EDS006`.
 An *alias* is a second code for the fault of a rule: `--select` and `--ignore`
@@ -48,7 +54,7 @@ class RuleGroup:
 
 #: The page's sections, in order; a code belongs to the group with its longest matching prefix.
 GROUPS = (
-    RuleGroup("Tool", ("EDS000",)),
+    RuleGroup("Tool", ("EDS000", "EDS09")),
     RuleGroup("EDS syntax (reader)", ("EDS0",)),
     RuleGroup("Values (EDS1xx)", ("EDS1",), """\
 A field's value is converted by the data type the spec gives the field
@@ -90,13 +96,19 @@ def alias_heading(alias: Alias, of: Rule) -> str:
     return f"### {alias.code} (alias of {of.code})"
 
 
+_FIX_NOTE = {FixSafety.SAFE: "`edsconv lint --fix` repairs it", FixSafety.UNSAFE: "offered, never applied"}
+
+
 def rule_section(r: Rule) -> str:
     """A rule's part of the page: heading, summary, severity and clause, explanation, the two examples."""
     blocking = " (import-blocking)" if r.import_blocking else ""
     clause = f"{r.clause} ({r.clause_note})" if r.clause_note else r.clause
     facts = [f"- Severity: {r.severity}{blocking}", f"- Clause: {clause}"]
+    if r.fix is not FixSafety.NONE:
+        facts.append(f"- Fix: {r.fix} ({_FIX_NOTE[r.fix]})")
+    fix = f"Fix: {fix_documentation(r.code)}" if r.fix is not FixSafety.NONE and fix_documentation(r.code) else ""
     facts += [f"- Alias: [{a.code}](#{_anchor(alias_heading(a, r))})" for a in r.aliases]
-    parts = [f"### {r.code}", _sentence(r.summary), "\n".join(facts), r.explanation,
+    parts = [f"### {r.code}", _sentence(r.summary), "\n".join(facts), r.explanation, fix,
              _example(r.labels[0], r.bad), _example(r.labels[1], r.good)]
     return "\n\n".join(part for part in parts if part)
 
@@ -150,11 +162,12 @@ def chosen_rules(codes: Iterable[str] = ()) -> list[Rule]:
 
 
 def rules_table(rules: list[Rule]) -> str:
-    """One line a rule: code, severity, clause, ``!`` when import-blocking, summary, aliases."""
+    """One line a rule: code, severity, clause, ``!`` when import-blocking, ``*`` when ``--fix`` repairs it,
+    summary, aliases."""
     clause_width = max((len(r.clause) for r in rules), default=0)
     lines = []
     for r in rules:
-        mark = "!" if r.import_blocking else " "
+        mark = ("!" if r.import_blocking else " ") + ("*" if r.fix is FixSafety.SAFE else " ")
         aliases = f" (alias: {', '.join(a.code for a in r.aliases)})" if r.aliases else ""
         lines.append(f"{r.code}  {str(r.severity):7}  {r.clause:{clause_width}}  {mark} {r.summary}{aliases}\n")
     return "".join(lines)

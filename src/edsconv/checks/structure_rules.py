@@ -112,6 +112,7 @@ MISSING_ENTRY = rule(
 )
 REQUIRED_FIELD_EMPTY = rule(
     "EDS207", ERROR, "C.4.1.2.2.12", "A required field is empty or missing",
+    fix="safe",
     import_blocking=True,
     explanation="""
         A field the entry's table marks Required is empty, or the entry ends before it.
@@ -314,6 +315,7 @@ KEYWORD_BEYOND_2003 = rule(
 )
 SECTION_BEYOND_2003 = rule(
     "EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)",
+    fix="safe",
     explanation="""
         A section that ISO 15745-4:2003 does not define and that is not vendor-specific:
         `[Capacity]`, the object class sections (`[TCP/IP Interface Class]`,

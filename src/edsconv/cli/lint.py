@@ -3,36 +3,66 @@
 from __future__ import annotations
 
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 import click
 
-from edsconv.cli.common import EXIT_CLEAN, counts_line, documentation, exit_status, rule_codes
-from edsconv.lint import lint_paths, promote_warnings
-from edsconv.report import FORMATTERS, FileReport
+from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, CannotRun, documentation, exit_status, rule_codes
+from edsconv.config import ConfigError, Overrides, Resolver
+from edsconv.diagnostics import Severity
+from edsconv.lint import FixMode, at_least, lint_paths
+from edsconv.report import FORMATTERS, FileReport, counts
 
 
 @click.command("lint", epilog=documentation("lint.md"))
 @click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True, path_type=Path))
 @click.option("--format", "output_format", type=click.Choice(list(FORMATTERS)), default="text", show_default=True,
-              help="text: path:line:col: CODE message [clause]; json; sarif (2.1.0, for code scanning); "
-              "github (workflow annotations).")
+              help="text: path:line:col: severity: CODE message [clause]; json; sarif (2.1.0, for code scanning); "
+              "github (workflow annotations, errors first, and a summary line).")
 @click.option("--select", multiple=True, callback=rule_codes, metavar="CODES",
-              help="Report only these codes or code prefixes (comma-separated, e.g. EDS0,EDS101).")
+              help="Report only these codes or code prefixes (comma-separated, e.g. EDS0,EDS101); replaces the "
+              "configuration's select and extend-select.")
 @click.option("--ignore", multiple=True, callback=rule_codes, metavar="CODES",
-              help="Do not report these codes or code prefixes; the longer matching prefix wins over --select.")
-@click.option("--warnings-as-errors", is_flag=True, help="Report warnings as errors, and fail on them.")
+              help="Do not report these codes or code prefixes (added to the configuration's ignore); the longer "
+              "matching prefix wins over --select.")
+@click.option("--warnings-as-errors/--no-warnings-as-errors", default=None,
+              help="Report warnings as errors, and fail on them [default: as the configuration says, else no].")
+@click.option("--min-severity", type=click.Choice([str(s) for s in Severity]), default=str(Severity.INFO),
+              show_default=True, help="Leave out diagnostics below this severity (in every format).")
+@click.option("--fix", "fix", flag_value=FixMode.FIX, default=None, type=click.UNPROCESSED,
+              help="Repair the faults that have a safe fix, write the files, and report what is left.")
+@click.option("--diff", "fix", flag_value=FixMode.DIFF, type=click.UNPROCESSED,
+              help="Print the repairs --fix would make as a unified diff; write nothing (exit 1 when a file "
+              "would change).")
+@click.option("--config", "config_file", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="Use this configuration file for every path instead of searching for one.")
+@click.option("--isolated", is_flag=True, help="Read no configuration file.")
+@click.option("--show-settings", is_flag=True,
+              help="Print the settings in force for each path and where they come from; check nothing.")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), default=None,
               help="Worker processes for many files [default: every core].")
 def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str, ...], ignore: tuple[str, ...],
-                 warnings_as_errors: bool, jobs: int | None) -> int:
-    """Check EDS files, and directories recursively for *.eds/*.EDS files.
+                 warnings_as_errors: bool | None, min_severity: str, fix: FixMode | None, config_file: Path | None,
+                 isolated: bool, show_settings: bool, jobs: int | None) -> int:
+    """Check EDS files, and directories recursively for *.eds files (any letter case).
 
-    Exit status: 0 no errors, 1 errors found, 2 could not run.
+    Settings come from [tool.edsconv] in pyproject.toml or from edsconv.toml, found
+    by walking up from each file; options override them. Exit status: 0 no errors,
+    1 errors found (--diff: a file would change), 2 could not run (a bad option, a
+    bad configuration file).
     """
-    reports = lint_paths(paths, select, ignore, jobs)
-    if warnings_as_errors:
-        promote_warnings(reports)
+    overrides = Overrides(select, ignore, warnings_as_errors, config_file, isolated)
+    with configuration():
+        if show_settings:
+            resolver = Resolver(overrides)
+            click.echo("\n".join(resolver.settings_for(p).describe(p) for p in paths), nl=False)
+            return EXIT_CLEAN
+        reports = lint_paths(paths, jobs=jobs, overrides=overrides, fix=fix or FixMode.REPORT)
+    at_least(reports, Severity[min_severity.upper()])
+    if fix is FixMode.DIFF:
+        return _print_diffs(reports)
     sys.stdout.write(FORMATTERS[output_format](reports))
     sys.stdout.flush()
     if output_format == "text":
@@ -40,14 +70,34 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
     return exit_status(d for r in reports for d in r.diagnostics)
 
 
+@contextmanager
+def configuration() -> Iterator[None]:
+    """A bad configuration file cannot run: ``path:line: reason``, exit 2."""
+    try:
+        yield
+    except ConfigError as error:
+        raise CannotRun(str(error)) from error
+
+
+def _print_diffs(reports: list[FileReport]) -> int:
+    """``--diff``: every file's repair as a unified diff on stdout, a count on stderr; 1 when one would change."""
+    changed = [r for r in reports if r.diff]
+    sys.stdout.write("".join(r.diff for r in changed))
+    sys.stdout.flush()
+    fixes = sum(len(r.fixed) for r in changed)
+    click.echo(f"would fix {fixes} problem{'s' if fixes != 1 else ''} in {len(changed)} "
+               f"file{'s' if len(changed) != 1 else ''}", err=True)
+    return EXIT_FINDINGS if changed else EXIT_CLEAN
+
+
 def summary(reports: list[FileReport]) -> str:
-    """The last line of the text output: files, diagnostics by severity, files that could not be checked."""
+    """The last line of the text output: files, diagnostics by severity, what was fixed, what could not be checked."""
     if not reports:
         return "no EDS files found"
     failed = sum(r.error is not None for r in reports)
-    line = counts_line(f"{len(reports)} file{'s' if len(reports) != 1 else ''}",
-                       (d for r in reports for d in r.diagnostics))
-    return line + (f"; {failed} could not be checked" if failed else "")
+    fixed = sum(len(r.fixed) for r in reports)
+    return counts(reports) + (f"; fixed {fixed}" if fixed else "") + \
+        (f"; {failed} could not be checked" if failed else "")
 
 
 @click.command("rules", epilog=documentation("rules.md"))

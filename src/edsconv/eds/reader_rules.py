@@ -28,6 +28,7 @@ SYNTAX_ERROR = rule(
 )
 MISSING_SEMICOLON = rule(
     "EDS002", Severity.ERROR, "C.4.1.2.2.8", "An entry does not end with ';'",
+    fix="safe",
     explanation="""
         An entry does not end with `;`. edsconv assumes one at the end of the last
         field and reads on; other tools merge the entry with the next statement.

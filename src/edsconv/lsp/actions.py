@@ -1,52 +1,33 @@
 """Code actions and formatting: whole-document edits and edits on one diagnostic.
 
-Two kinds of code action: the fixes ``edsconv lint --fix`` knows (taken from
-:func:`lint_fixes`, so that the command line and the editor fix the same way)
+Two kinds of code action: the fixes ``edsconv lint --fix`` makes (:mod:`edsconv.fix`,
+through :func:`lint_fixes`, so that the command line and the editor fix the same way)
 and "suppress this rule here", which writes the inline comment
-``$ edsconv: ignore[CODE]`` on the entry the diagnostic is in. The suppression
-itself, and the fixes, come with the configuration issue (see :mod:`edsconv.lsp.settings`).
+``$ edsconv: ignore[CODE]`` (:mod:`edsconv.suppress`) on the entry the diagnostic is in.
 """
 
 from __future__ import annotations
 
-import re
-from dataclasses import dataclass
-
-from edsconv.diagnostics import Severity
+from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.eds.canonical import write_canonical
 from edsconv.eds.locate import locate
 from edsconv.eds.syntax import Comment, Entry, Section
+from edsconv.fix import Edit, Fix, fix_for
 from edsconv.lsp.analysis import Analysis
+from edsconv.suppress import SUPPRESSION as _SUPPRESSION
 
-#: The inline suppression comment the configuration issue will honour.
+#: The inline suppression comment :mod:`edsconv.suppress` honours.
 SUPPRESSION = "edsconv: ignore[{codes}]"
-_SUPPRESSION = re.compile(r"edsconv: ignore\[([^\]]*)\]")
 
-
-@dataclass(frozen=True, slots=True)
-class Edit:
-    """Replace ``line``:``column`` .. ``end_line``:``end_column`` (1-based, end exclusive) by ``text``."""
-
-    line: int
-    column: int
-    end_line: int
-    end_column: int
-    text: str
-
-
-@dataclass(frozen=True, slots=True)
-class Fix:
-    title: str
-    edits: tuple[Edit, ...]
+__all__ = ["SUPPRESSION", "Edit", "Fix", "formatted", "lint_fixes", "suppression"]
 
 
 def lint_fixes(analysis: Analysis, code: str, line: int, column: int) -> list[Fix]:
-    """The fixes ``edsconv lint --fix`` would apply to the diagnostic ``code`` at ``line``:``column``.
-
-    The seam for the fixes of the configuration issue: the library's fix for a rule is to be
-    called here. No rule has one yet.
-    """
-    return []
+    """The fix ``edsconv lint --fix`` applies to the diagnostic ``code`` at ``line``:``column`` (none, or one)."""
+    found = next((d for d in analysis.diagnostics if d.code == code and (max(d.line, 1), max(d.column, 1))
+                  == (line, column)), None)
+    fix = fix_for(analysis.eds, list(analysis.lines), found or Diagnostic(code, "", line, column))
+    return [fix] if fix is not None else []
 
 
 def suppression(analysis: Analysis, code: str, line: int, column: int) -> Fix | None:
@@ -59,20 +40,20 @@ def suppression(analysis: Analysis, code: str, line: int, column: int) -> Fix | 
     text = analysis.line_text(target)
     title = f"Suppress {code} here ($ edsconv: ignore[{code}])"
     for comment in _comments_on(owner, target):
-        match = _SUPPRESSION.search(comment.text)
+        match = next((m for m in _SUPPRESSION.finditer(comment.text) if not m.group("file")), None)
         if match is None:
             continue
-        codes = [c.strip() for c in match.group(1).split(",") if c.strip()]
+        codes = [c.strip() for c in match.group("codes").split(",") if c.strip()]
         if code in codes:
             return None
-        at = comment.column + 1 + match.end(1)  # the column of "]": after "$", then the text up to the codes' end
+        at = comment.column + 1 + match.end("codes")  # the column of "]": after "$", then the text up to the codes' end
         return Fix(title, (Edit(target, at, target, at, f", {code}" if codes else code),))
     if not _comments_on(owner, target):
         end = len(text) + 1
         return Fix(title, (Edit(target, end, target, end, f" $ {SUPPRESSION.format(codes=code)}"),))
     indent = text[:len(text) - len(text.lstrip())]
-    line = f"{indent}$ {SUPPRESSION.format(codes=code)}{analysis.eds.newline}"
-    return Fix(title, (Edit(target, 1, target, 1, line),))
+    comment_line = f"{indent}$ {SUPPRESSION.format(codes=code)}{analysis.eds.newline}"
+    return Fix(title, (Edit(target, 1, target, 1, comment_line),))
 
 
 def _comments_on(owner: Entry | Section | None, line: int) -> list[Comment]:

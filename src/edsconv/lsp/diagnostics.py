@@ -97,7 +97,7 @@ class Publisher:
             return  # changed while it was being checked: the newer text's own check publishes
         positions = Positions(self._server.workspace.position_codec, analysis.lines)
         settings = self._settings(uri)
-        items = [to_lsp(d, analysis, positions) for d in analysis.diagnostics if settings.reports(d)]
+        items = [to_lsp(d, analysis, positions) for d in settings.kept(analysis.eds, analysis.diagnostics)]
         self._server.text_document_publish_diagnostics(
             types.PublishDiagnosticsParams(uri=uri, diagnostics=items, version=version))
         if self._pending.get(uri) is asyncio.current_task():

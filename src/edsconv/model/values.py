@@ -44,6 +44,7 @@ OUT_OF_RANGE = rule(
 )
 LEADING_ZERO = rule(
     "EDS103", Severity.ERROR, "C.4.1.3.7", "A decimal number is written with leading zeros",
+    fix="safe",
     explanation="""
         A decimal number is written with leading zeros (`0254`), which C.4.1.3.7 forbids;
         hexadecimal may have them (`0x00FE`).

@@ -1,0 +1,138 @@
+"""Inline suppression: EDS comments that silence rules on one entry or in the whole file.
+
+``$ edsconv: ignore[EDS317]`` in a comment of an entry (after the entry or one of
+its fields, or on a comment line just above it) silences those codes for
+diagnostics on the entry's lines; on a section header line it silences them on
+that line. ``$ edsconv: ignore-file[EDS005, EDS2]`` anywhere silences them in
+the whole file. Codes may be prefixes and aliases, as ``--ignore`` takes them.
+A suppression that silences nothing is itself reported (:data:`UNUSED_SUPPRESSION`),
+as ruff reports an unused ``# noqa``; a code whose rule is not selected for the
+file is not judged.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+
+from edsconv.diagnostics import Diagnostic, Severity, block, load_rules, rule
+from edsconv.eds.syntax import Comment, EdsFile, Entry, Section
+
+UNUSED_SUPPRESSION = rule(
+    "EDS099", Severity.WARNING, "edsconv",
+    "An edsconv: ignore[...] comment suppresses nothing, or names no rule",
+    explanation="""
+        A suppression comment (`$ edsconv: ignore[CODE]` on an entry, `$ edsconv: ignore-file[CODE]`
+        for the file) names a code that no diagnostic in its reach carries, or a code that names
+        no rule. A stale suppression would silently hide the next real fault there: remove the
+        code (`edsconv lint --fix` does). A code whose rule is not selected for the file
+        (`--select`, `ignore`, `per-file-ignores`) is not judged.
+    """,
+    bad=block("""
+        [Device]
+                VendCode = 65535;       $ edsconv: ignore[EDS102]
+    """),
+    good=block("""
+        [Device]
+                VendCode = 65535;
+    """),
+    fix="safe",
+)
+
+#: ``edsconv: ignore[CODES]`` (an entry or a header line) and ``edsconv: ignore-file[CODES]`` (the file).
+SUPPRESSION = re.compile(r"edsconv:\s*ignore(?P<file>-file)?\[(?P<codes>[^\]]*)\]")
+_CODE = re.compile(r"[^,\s]+")
+
+
+@dataclass(frozen=True, slots=True)
+class Suppression:
+    """One code of a suppression comment, the lines it covers and where it is written."""
+
+    code: str
+    #: lines covered (first, last); (0, 0) for the whole file
+    reach: tuple[int, int]
+    line: int
+    column: int
+    end_column: int
+
+    @property
+    def file_level(self) -> bool:
+        return self.reach == (0, 0)
+
+    def covers(self, diagnostic: Diagnostic) -> bool:
+        if not diagnostic.code.startswith(load_rules().resolve(self.code)):
+            return False
+        return self.file_level or self.reach[0] <= diagnostic.line <= self.reach[1]
+
+
+def suppressions(eds: EdsFile) -> list[Suppression]:
+    """Every code of every suppression comment of the file, in file order."""
+    found: list[Suppression] = []
+    for comments, reach in _comment_groups(eds):
+        for comment in comments:
+            for match in SUPPRESSION.finditer(comment.text):
+                where = (0, 0) if match.group("file") else reach
+                start = comment.column + 1 + match.start("codes")  # the text starts after "$"
+                found += [Suppression(code.group().upper(), where, comment.line, start + code.start(),
+                                      start + code.end()) for code in _CODE.finditer(match.group("codes"))]
+    found.sort(key=lambda s: (s.line, s.column))
+    return found
+
+
+def apply_suppressions(eds: EdsFile, diagnostics: Iterable[Diagnostic],
+                       reports: Callable[[str], bool]) -> list[Diagnostic]:
+    """The diagnostics no suppression covers, with an EDS099 for each suppression code that covers none.
+
+    ``reports(code)`` says whether a code is reported for this file at all (selection, per-file ignores).
+    """
+    kept = list(diagnostics)
+    found = suppressions(eds)
+    if not found:
+        return kept
+    used: set[Suppression] = set()
+    remaining = []
+    for diagnostic in kept:
+        covering = [s for s in found if s.covers(diagnostic)]
+        used.update(covering)
+        if not covering:
+            remaining.append(diagnostic)
+    if reports(UNUSED_SUPPRESSION.code):
+        remaining += [_unused(s, eds.path) for s in found if s not in used and _judged(s.code, reports)]
+    return remaining
+
+
+def _judged(code: str, reports: Callable[[str], bool]) -> bool:
+    """Unknown codes are always reported; a known one only when one of its rules is reported for the file."""
+    registry = load_rules()
+    resolved = registry.resolve(code)
+    if not registry.knows_prefix(resolved):
+        return True
+    return any(reports(c) for c in registry.rules if c.startswith(resolved))
+
+
+def _unused(suppression: Suppression, path: str | None) -> Diagnostic:
+    registry = load_rules()
+    if registry.knows_prefix(registry.resolve(suppression.code)):
+        reach = "this file" if suppression.file_level else "this entry"
+        message = f"edsconv: ignore[{suppression.code}] suppresses nothing: no {suppression.code} diagnostic in {reach}"
+    else:
+        message = f"edsconv: ignore[{suppression.code}] names no rule (see 'edsconv rules')"
+    return Diagnostic.of(UNUSED_SUPPRESSION, message, suppression.line, suppression.column, path,
+                         suppression.line, suppression.end_column)
+
+
+def _comment_groups(eds: EdsFile) -> Iterator[tuple[list[Comment], tuple[int, int]]]:
+    """Each node's comments with the lines a suppression among them covers."""
+    sections: list[Section] = [*([eds.preamble] if eds.preamble else []), *eds.sections]
+    for section in sections:
+        yield [*section.leading_comments, *section.comments], (section.line, section.line)
+        for entry in section.entries:
+            yield _entry_comments(entry), (entry.line, max(entry.end_line, entry.line))
+        for _, unparsed in section.unparsed:
+            yield [*unparsed.leading_comments, *unparsed.comments], (unparsed.line, unparsed.line)
+    yield eds.trailing_comments, (0, 0)
+
+
+def _entry_comments(entry: Entry) -> list[Comment]:
+    return [*entry.leading_comments, *entry.comments, *(c for item in entry.walk_fields() for c in item.comments)]

@@ -218,6 +218,38 @@ def test_sarif_and_github_from_the_command(tree: Path, monkeypatch):
         f"::error file=m_broken.eds,line={BROKEN_LINE},col={BROKEN_COLUMN},title=EDS002::")
 
 
+@pytest.mark.parametrize("output_format", ["text", "json", "sarif", "github"])
+def test_min_severity_leaves_out_lower_diagnostics_in_every_format(tmp_path: Path, output_format: str):
+    path = tmp_path / "warns.eds"
+    path.write_bytes(WARNS.replace(b"ProdCode = 1001;", b"ProdCode = 01001;"))  # + EDS103, an error
+    every = run("lint", "--isolated", "--format", "json", str(path))
+    assert [d["code"] for d in json.loads(every.stdout)["files"][0]["diagnostics"]] == ["EDS103", "EDS005"]
+    errors = run("lint", "--isolated", "--format", output_format, "--min-severity", "error", str(path))
+    assert errors.return_value == 1
+    assert reported(output_format, errors.stdout) == ["EDS103"]
+    warnings = run("lint", "--isolated", "--format", output_format, "--min-severity", "warning", str(path))
+    assert reported(output_format, warnings.stdout) == ["EDS103", "EDS005"]
+
+
+def reported(output_format: str, output: str) -> list[str]:
+    """The codes of the diagnostics in ``output``."""
+    import re
+
+    if output_format == "sarif":
+        return [r["ruleId"] for r in json.loads(output)["runs"][0]["results"]]
+    if output_format == "json":
+        return [d["code"] for f in json.loads(output)["files"] for d in f["diagnostics"]]
+    return re.findall(r"\b(EDS\d{3})\b", output)
+
+
+def test_the_pre_commit_hook_pattern_takes_eds_in_any_letter_case():
+    import re
+
+    (pattern,) = re.findall(r"^  files: (.+)$", (REPO / ".pre-commit-hooks.yaml").read_text(), re.MULTILINE)
+    assert [name for name in ("a.eds", "B.EDS", "Mixed.Eds", "c.eds.txt", "eds") if re.search(pattern, name)] == [
+        "a.eds", "B.EDS", "Mixed.Eds"]
+
+
 def test_no_progress_bar_when_piped(tmp_path: Path):
     for index in range(lint.PROGRESS_THRESHOLD + 1):
         (tmp_path / f"f{index:02}.eds").write_bytes(GOOD)
@@ -258,7 +290,7 @@ def test_pre_commit_hook_definition():
     assert "- id: edsconv-lint" in text
     assert "entry: edsconv lint" in text
     assert "language: python" in text
-    assert r"files: \.(eds|EDS)$" in text
+    assert "files: (?i)\\.eds$" in text
 
 
 @pytest.mark.real_corpus
@@ -267,5 +299,5 @@ def test_real_corpus_runs_through_and_reports_every_file():
     result = edsconv("lint", "--format", "json", str(SHARED_REAL))
     assert result.returncode in (0, 1), result.stderr
     document = json.loads(result.stdout)
-    expected = sorted(str(p) for p in SHARED_REAL.rglob("*") if p.suffix in (".eds", ".EDS"))
+    expected = sorted(str(p) for p in SHARED_REAL.rglob("*") if p.suffix.lower() == ".eds")
     assert [f["path"] for f in document["files"]] == expected

@@ -49,31 +49,42 @@ def test_json_shape_is_files_with_diagnostics_and_a_summary(tmp_path: Path):
     assert document["summary"] == {"files": 3, "errors": 2, "warnings": 1}
 
 
+SARIF_SCHEMA = json.loads((REPO / "tests" / "sarif" / "sarif-2.1.0.json").read_text(encoding="utf-8"))
+
+
 def validate_sarif(document: dict) -> None:
-    """The essential requirements of the SARIF 2.1.0 schema, and GitHub code scanning's."""
+    """Valid by the SARIF 2.1.0 JSON schema, and carrying what GitHub code scanning requires of an upload
+    (its "SARIF support" page: tool.driver.name, a rule per ruleId with its descriptions and help,
+    results with message text, a location with an artifact uri and a start line, and fingerprints)."""
+    import jsonschema
+
+    jsonschema.Draft202012Validator(SARIF_SCHEMA, format_checker=jsonschema.FormatChecker()).validate(document)
     assert document["version"] == "2.1.0"
     assert document["$schema"].endswith("sarif-2.1.0.json")
     (run,) = document["runs"]
     driver = run["tool"]["driver"]
-    assert driver["name"] == "edsconv"
+    assert driver["name"] == "edsconv" and driver["version"]
     rule_ids = [r["id"] for r in driver["rules"]]
     assert len(rule_ids) == len(set(rule_ids))
     for described in driver["rules"]:
-        assert described["shortDescription"]["text"]
+        assert described["shortDescription"]["text"] and described["fullDescription"]["text"]
+        assert described["help"]["text"] and described["help"]["markdown"]
         assert described["defaultConfiguration"]["level"] in {"error", "warning", "note"}
+        assert len(described["shortDescription"]["text"]) <= 1024
     for result in run["results"]:
         assert result["ruleId"] in rule_ids
         assert driver["rules"][result["ruleIndex"]]["id"] == result["ruleId"]
         assert result["level"] in {"error", "warning", "note"}
         assert result["message"]["text"]
+        assert result["partialFingerprints"]["primaryLocationLineHash"]
         (location,) = result["locations"]
         artifact = location["physicalLocation"]["artifactLocation"]
         assert artifact["uri"] and " " not in artifact["uri"]
         if "uriBaseId" in artifact:
             assert artifact["uriBaseId"] in run["originalUriBaseIds"]
             assert not artifact["uri"].startswith("/")
-        region = location["physicalLocation"].get("region", {})
-        assert region.get("startLine", 1) >= 1 and region.get("startColumn", 1) >= 1
+        region = location["physicalLocation"]["region"]
+        assert region["startLine"] >= 1 and region.get("startColumn", 1) >= 1
 
 
 def test_sarif_meets_the_schema_essentials(tmp_path: Path):
@@ -85,7 +96,7 @@ def test_sarif_meets_the_schema_essentials(tmp_path: Path):
     assert first["artifactLocation"] == {"uri": "dir/bad%20file.eds", "uriBaseId": "%SRCROOT%"}
     assert first["region"] == {"startLine": 3, "startColumn": 7}
     outside = results[3]["locations"][0]["physicalLocation"]
-    assert outside == {"artifactLocation": {"uri": "file:///elsewhere/broken.eds"}}
+    assert outside == {"artifactLocation": {"uri": "file:///elsewhere/broken.eds"}, "region": {"startLine": 1}}
     assert document["runs"][0]["originalUriBaseIds"]["%SRCROOT%"]["uri"] == tmp_path.as_uri() + "/"
 
 
@@ -93,6 +104,50 @@ def test_sarif_lists_every_registered_rule():
     rules = report.sarif_document([])["runs"][0]["tool"]["driver"]["rules"]
     assert [r["id"] for r in rules] == [r.code for r in report.all_rules()]
     assert {"EDS000", "EDS001", "XML003"} <= {r["id"] for r in rules}
+
+
+def test_sarif_rules_carry_their_documentation_and_the_declared_urls():
+    driver = report.sarif_document([])["runs"][0]["tool"]["driver"]
+    by_id = {r["id"]: r for r in driver["rules"]}
+    eds002 = by_id["EDS002"]
+    assert eds002["fullDescription"]["text"].startswith("An entry does not end with `;`.")
+    assert eds002["help"]["markdown"] == rule_docs.rule_section(report.all_rules()[2])
+    assert "Fix: safe" in eds002["help"]["text"] and "```" not in eds002["help"]["text"]
+    assert eds002["properties"]["fix"] == "safe"
+    # pyproject.toml's [project.urls] Repository, read from the installed metadata
+    assert driver["informationUri"] == report.project_url() == "https://edsconv.invalid/edsconv"
+    assert eds002["helpUri"] == "https://edsconv.invalid/edsconv/blob/main/docs/rules.md#eds002"
+
+
+def test_sarif_fingerprints_survive_moved_lines_and_tell_results_on_one_line_apart(tmp_path: Path):
+    """Three EDS201 on line 1 get three fingerprints; lines inserted above EDS103 keep every fingerprint."""
+    text = "$ header\n[Params]\n        Param1 = 0,,,0x0000,0xC6,1,\"A\",\"\",\"\",0,255,07;\n"
+    path = tmp_path / "moved.eds"
+
+    def fingerprints() -> dict[str, list[str]]:
+        from edsconv.lint import lint_file
+
+        results = report.sarif_document([lint_file(str(path))], root=tmp_path)["runs"][0]["results"]
+        found: dict[str, list[str]] = {}
+        for r in results:
+            found.setdefault(r["ruleId"], []).append(r["partialFingerprints"]["primaryLocationLineHash"])
+        return found
+
+    path.write_text(text, encoding="ascii")
+    before = fingerprints()
+    assert len(before["EDS201"]) == 3 == len(set(before["EDS201"]))
+    path.write_text(text.replace("[Params]", "$ one\n$ two\n[Params]"), encoding="ascii")
+    assert fingerprints() == before
+    path.write_text(text.replace("07;", "08;"), encoding="ascii")  # the line itself changed
+    assert fingerprints()["EDS103"] != before["EDS103"]
+
+
+def test_sarif_region_ends_where_the_diagnostic_has_a_span(tmp_path: Path):
+    d = Diagnostic("EDS099", "unused", 4, 20, "a.eds", Severity.WARNING, "edsconv", 4, 26)
+    document = report.sarif_document([FileReport("a.eds", [d])], root=Path.cwd())
+    validate_sarif(document)
+    region = document["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["region"]
+    assert region == {"startLine": 4, "startColumn": 20, "endLine": 4, "endColumn": 26}
 
 
 def test_sarif_help_uri_points_at_the_rule_heading_in_docs(monkeypatch):

@@ -10,8 +10,10 @@ This module is imported on the command line's start-up path: keep its imports li
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePath
@@ -74,7 +76,11 @@ def format_json(reports: Sequence[Report]) -> str:
 
 # --- SARIF 2.1.0 --------------------------------------------------------------------
 def project_url() -> str | None:
-    """The home page the installed package declares (``[project.urls]``), if any."""
+    """The repository the installed package declares in ``[project.urls]`` (pyproject.toml), if any.
+
+    The one place the project's address is written: SARIF's ``informationUri`` and each rule's
+    ``helpUri`` (:func:`rule_help_uri`) are made from it.
+    """
     from importlib import metadata
 
     try:
@@ -89,7 +95,7 @@ def project_url() -> str | None:
 
 
 def rule_help_uri(base: str, code: str) -> str:
-    """The anchor of a rule's ``### CODE`` heading in docs/rules.md."""
+    """The anchor of a rule's ``### CODE`` heading in docs/rules.md, in the repository at ``base``."""
     return f"{base}/blob/main/docs/rules.md#{code.lower()}"
 
 
@@ -111,25 +117,28 @@ def artifact_location(path: str, root: Path) -> dict:
 
 
 def sarif_document(reports: Sequence[Report], root: Path | None = None) -> dict:
+    """The SARIF log of a run: every rule with its documentation, one result per diagnostic."""
     root = Path(os.path.abspath(root or Path.cwd()))
     rules = all_rules()
     index = {r.code: i for i, r in enumerate(rules)}
     base = project_url()
-    driver: dict = {"name": "edsconv", "version": _version(), "rules": [_sarif_rule(r, base) for r in rules]}
+    driver: dict = {"name": "edsconv", "version": _version(), "semanticVersion": _version(),
+                    "rules": [_sarif_rule(r, base) for r in rules]}
     if base:
         driver["informationUri"] = base
     results = []
     for report in reports:
         location = artifact_location(report.path, root)
-        for d in report.diagnostics:
-            physical: dict = {"artifactLocation": location}
-            if d.line > 0:
-                physical["region"] = _region(d)
+        fingerprints = line_fingerprints(report.path, relative_to(report.path, root).as_posix(), report.diagnostics)
+        for d, fingerprint in zip(report.diagnostics, fingerprints, strict=True):
+            # a finding about the whole file (no line) is placed on line 1, as code scanning needs a start line
+            physical: dict = {"artifactLocation": location, "region": _region(d) if d.line > 0 else {"startLine": 1}}
             result: dict = {
                 "ruleId": d.code,
                 "level": _SARIF_LEVEL[d.severity],
-                "message": {"text": d.message},
+                "message": {"text": f"{d.message} [{d.clause}]" if d.clause else d.message},
                 "locations": [{"physicalLocation": physical}],
+                "partialFingerprints": {FINGERPRINT: fingerprint},
             }
             if d.code in index:
                 result["ruleIndex"] = index[d.code]
@@ -146,16 +155,59 @@ def format_sarif(reports: Sequence[Report], root: Path | None = None) -> str:
     return json.dumps(sarif_document(reports, root), indent=2) + "\n"
 
 
+#: The fingerprint GitHub code scanning matches alerts by. Given here, the upload action does not compute
+#: its own (which hashes only the line's text, so that two results on one line would share it).
+FINGERPRINT = "primaryLocationLineHash"
+#: Line numbers inside messages ("comes later (line 42)") change when lines move: they take no part.
+_LINE_NUMBER = re.compile(r"\b(line|lines) \d+(-\d+)?")
+
+
+def line_fingerprints(path: str, relative: str, diagnostics: Sequence[Diagnostic]) -> list[str]:
+    """A fingerprint per diagnostic: a hash of the rule, the file, the text of its line and its message, and
+    the count of earlier diagnostics with the same hash (``hash:N``). It stays the same when lines are
+    added above, and differs for two results on one line unless rule and message are the same too."""
+    lines = _file_lines(path) if any(d.line > 0 for d in diagnostics) else []
+    seen: dict[str, int] = {}
+    found = []
+    for d in diagnostics:
+        text = lines[d.line - 1].strip() if 0 < d.line <= len(lines) else ""
+        key = "\0".join((d.code, relative, text, _LINE_NUMBER.sub(r"\1", d.message)))
+        digest = hashlib.sha256(key.encode("utf-8", "surrogateescape")).hexdigest()[:32]
+        seen[digest] = seen.get(digest, 0) + 1
+        found.append(f"{digest}:{seen[digest]}")
+    return found
+
+
+def _file_lines(path: str) -> list[str]:
+    from edsconv.eds.source import decode
+
+    try:
+        return decode(Path(path).read_bytes()).text.split("\n")
+    except OSError:
+        return []
+
+
 def _sarif_rule(r: Rule, base: str | None) -> dict:
+    from edsconv.rule_docs import rule_help_text, rule_section
+
     described = {
         "id": r.code,
+        "name": _rule_name(r.summary),
         "shortDescription": {"text": r.summary},
+        "fullDescription": {"text": (r.explanation or r.summary).replace("\n", " ")},
+        "help": {"text": rule_help_text(r), "markdown": rule_section(r)},
         "defaultConfiguration": {"level": _SARIF_LEVEL[r.severity]},
-        "properties": {"clause": r.clause, "import_blocking": r.import_blocking},
+        "properties": {"clause": r.clause, "import_blocking": r.import_blocking, "fix": str(r.fix),
+                       "tags": ["EDS" if r.code.startswith("EDS") else "XML", f"ISO 15745-4 {r.clause}"]},
     }
     if base:
         described["helpUri"] = rule_help_uri(base, r.code)
     return described
+
+
+def _rule_name(summary: str) -> str:
+    """A rule's summary as the PascalCase identifier SARIF's ``name`` is meant to be."""
+    return "".join(word[:1].upper() + word[1:] for word in re.findall(r"[A-Za-z0-9]+", summary))
 
 
 def _region(d: Diagnostic) -> dict:

@@ -9,6 +9,7 @@ docs/rules.md differs from it.
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
@@ -111,6 +112,13 @@ def rule_section(r: Rule) -> str:
     parts = [f"### {r.code}", _sentence(r.summary), "\n".join(facts), r.explanation, fix,
              _example(r.labels[0], r.bad), _example(r.labels[1], r.good)]
     return "\n\n".join(part for part in parts if part)
+
+
+def rule_help_text(r: Rule) -> str:
+    """A rule's documentation as plain text (SARIF ``help.text``): the Markdown of :func:`rule_section`
+    without its heading, fences and emphasis."""
+    body = rule_section(r).split("\n\n", 1)[1]
+    return re.sub(r"^```\w*\n|\n```$|\*\*|`", "", body, flags=re.MULTILINE).strip()
 
 
 def alias_section(alias: Alias, of: Rule) -> str:

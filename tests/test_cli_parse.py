@@ -15,7 +15,8 @@ from edsconv.cli import cli
 CLEAN = "[File]\nDescText = \"x\"; $ c\n[Device]\nK = 1, {2, *};\n"
 BROKEN = '[File]\nA = 1 ];\nB = "a\\qb";\n'
 WARNING_ONLY = "[File]\n[TCP/IP Interface Class]\nA = 1;\n"
-LINE = re.compile(r"^(?P<path>.+):(?P<line>\d+):(?P<col>\d+): (?P<code>EDS\d{3}) (?P<message>.+) \[(?P<clause>C\.[\d.]+)\]$")
+LINE = re.compile(r"^(?P<path>.+):(?P<line>\d+):(?P<col>\d+): (?P<severity>error|warning|info): (?P<code>EDS\d{3}) "
+                  r"(?P<message>.+) \[(?P<clause>C\.[\d.]+)\]$")
 
 
 @pytest.fixture
@@ -43,7 +44,7 @@ def test_warnings_alone_exit_0(files):
     assert result.returncode == 0
     (line,) = result.stdout.splitlines()
     match = LINE.match(line)
-    assert match and (match["line"], match["col"], match["code"]) == ("2", "1", "EDS006")
+    assert match and (match["line"], match["col"], match["severity"], match["code"]) == ("2", "1", "warning", "EDS006")
 
 
 def test_broken_file_exit_1_with_one_line_per_diagnostic(files):

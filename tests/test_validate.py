@@ -59,7 +59,7 @@ def test_problems_are_reported_as_path_line_col_code_message_xpath_clause():
     result = run(str(path))
     assert result.return_value == 1
     assert result.output == (
-        f"{path}:40:11: XML003 value has to be greater or equal than 1 "
+        f"{path}:40:11: error: XML003 value has to be greater or equal than 1 "
         "(at /ISO15745Profile/ProfileBody/DeviceManager/DeviceManager-Attributes/CommuServiceManager/DM-NodeNumber) "
         "[ISO 15745-4 B.1.5]\n")
 
@@ -93,8 +93,8 @@ def test_powerlink_xdd_is_recognised_as_info_and_exits_0():
 def test_unsafe_and_malformed_files_are_diagnostics_not_tracebacks():
     result = run(str(CORPUS / "security" / "xxe-file.xml"), str(CORPUS / "broken" / "not-well-formed.xml"))
     assert result.return_value == 1 and result.exception is None
-    assert "xxe-file.xml:4:3: XML002 DOCTYPE declares entities" in result.output
-    assert "not-well-formed.xml:6:19: XML001 not well-formed" in result.output
+    assert "xxe-file.xml:4:3: error: XML002 DOCTYPE declares entities" in result.output
+    assert "not-well-formed.xml:6:19: error: XML001 not well-formed" in result.output
 
 
 def test_missing_file_exits_2():
@@ -115,3 +115,38 @@ def test_validating_a_small_file_starts_quickly():
     completed = subprocess.run([sys.executable, "-m", "edsconv", "validate", str(path)], env=_env())
     assert completed.returncode == 0
     assert time.perf_counter() - started < 2.0  # generous for loaded CI machines; measured ~0.4 s
+
+
+def test_a_content_model_error_points_at_the_offending_child_not_its_parent(tmp_path: Path):
+    text = (CORPUS / "cip-device" / "valid-chassis.xml").read_text(encoding="utf-8")
+    lines = text.splitlines()
+    date_line = next(i for i, line in enumerate(lines) if "<ProfileDate>" in line)
+    lines.insert(date_line + 1, "")
+    lines.insert(date_line + 2, "      <Bogus/>")
+    path = tmp_path / "extra-child.xml"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    result = run(str(path))
+    assert result.return_value == 1
+    # the header starts 6 lines above; the child stands on line date_line + 3, column 7
+    assert result.output == (
+        f"{path}:{date_line + 3}:7: error: XML003 <Bogus> is not allowed here (child 7 of <ProfileHeader>); the "
+        "schema expects <ISO15745Reference> (at /ISO15745Profile/ProfileHeader/Bogus) [ISO 15745-4 C.2.1.3.3]\n")
+
+
+def test_a_bad_date_says_what_the_schema_expects_and_names_no_python_class(tmp_path: Path):
+    text = (CORPUS / "cip-device" / "valid-chassis.xml").read_text(encoding="utf-8")
+    path = tmp_path / "us-date.xml"
+    path.write_text(text.replace("<ProfileDate>2024-05-01</ProfileDate>", "<ProfileDate>05-01-2024</ProfileDate>"),
+                    encoding="utf-8")
+    result = run(str(path))
+    assert result.return_value == 1
+    assert "'05-01-2024' is not a valid xsd:date (YYYY-MM-DD) (at /ISO15745Profile/ProfileHeader/ProfileDate)" \
+        in result.output
+    assert "class" not in result.output and "elementpath" not in result.output
+
+
+def test_no_message_over_the_corpus_shows_python_internals():
+    result = run(*map(str, sorted(CORPUS.glob("*/*.xml"))))
+    assert result.return_value == 1
+    for internal in ("<class", "elementpath", "Xsd11", "XsdKey", "',)"):
+        assert internal not in result.output

@@ -8,15 +8,20 @@ message ends with the XPath of the offending element.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from lxml import etree
 
 from edsconv.diagnostics import Diagnostic, Severity, block, rule
 from edsconv.xml.safe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
 from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
+
+if TYPE_CHECKING:  # xmlschema is imported only when a schema is loaded
+    from xmlschema import XMLSchemaChildrenValidationError, XMLSchemaValidationError
 
 NOT_WELL_FORMED = rule(
     "XML001", Severity.ERROR, "XML 1.0", "The file is not well-formed XML",
@@ -198,13 +203,59 @@ _XML_ERROR_RULES = {XmlSyntaxError: NOT_WELL_FORMED, UnsafeXmlError: UNSAFE_XML,
 
 
 def _schema_diagnostics(document: XmlDocument, report: FileReport) -> Iterable[Diagnostic]:
+    """One XML003 per schema error, at the element at fault: for a content-model error the child that
+    is not allowed (libxml2 and Xerces point there too), not its parent."""
     kind = report.kind
     for error in load_schema(kind.xsd).iter_errors(document.tree):
-        line, column = document.position(error.elem) if error.elem is not None else (0, 0)
-        reason = (error.reason or error.message).strip().rstrip(".")
-        diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column, report.path)
+        child = getattr(error, "invalid_child", None)
+        at = child if child is not None else error.elem
+        line, column = document.position(at) if at is not None else (0, 0)
+        path = error.path or "/"
+        if child is not None:
+            path = f"{path.rstrip('/')}/{etree.QName(child).localname}"
+        diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{schema_reason(error)} (at {path})", line, column,
+                                   report.path)
         diagnostic.clause = f"ISO 15745-4 {kind.clause}"
         yield diagnostic
+
+
+#: The XSD types whose values elementpath names by its Python class ("<class '...datetime.Date'>").
+_XSD_TYPES = {"Date": "xsd:date (YYYY-MM-DD)", "DateTime": "xsd:dateTime (YYYY-MM-DDThh:mm:ss)",
+              "DateTime10": "xsd:dateTime (YYYY-MM-DDThh:mm:ss)", "Date10": "xsd:date (YYYY-MM-DD)",
+              "Time": "xsd:time (hh:mm:ss)", "Duration": "xsd:duration (PnYnMnDTnHnMnS)",
+              "GregorianYear": "xsd:gYear (YYYY)", "GregorianYear10": "xsd:gYear (YYYY)",
+              "GregorianMonth": "xsd:gMonth (--MM)", "GregorianDay": "xsd:gDay (---DD)",
+              "GregorianMonthDay": "xsd:gMonthDay (--MM-DD)", "GregorianYearMonth": "xsd:gYearMonth (YYYY-MM)",
+              "GregorianYearMonth10": "xsd:gYearMonth (YYYY-MM)"}
+_BAD_DATETIME = re.compile(r"Invalid datetime string (?P<value>'[^']*'|\S+) for <class '(?:[\w.]+\.)?(?P<cls>\w+)'>")
+_PYTHON_CLASS = re.compile(r"<class '(?:[\w.]+\.)?(?P<cls>\w+)'>")
+_IDENTITY = re.compile(r"duplicated value \((?P<values>.*?),?\) for "
+                       r"Xsd(?:11)?(?P<kind>Key|Unique)\(name='(?P<name>[^']*)'\)")
+
+
+def schema_reason(error: XMLSchemaValidationError) -> str:
+    """What is wrong, in the schema's terms: the elements and XSD types it names, never a Python class."""
+    from xmlschema import XMLSchemaChildrenValidationError
+
+    if isinstance(error, XMLSchemaChildrenValidationError):
+        return _content_model_reason(error)
+    reason = (error.reason or error.message).strip().rstrip(".")
+    reason = _BAD_DATETIME.sub(lambda m: f"{m['value']} is not a valid {_XSD_TYPES.get(m['cls'], m['cls'])}", reason)
+    reason = _IDENTITY.sub(lambda m: f"the value {m['values']} appears more than once, but the schema's "
+                           f"{m['kind'].lower()} constraint {m['name']} requires each to be unique", reason)
+    return _PYTHON_CLASS.sub(lambda m: _XSD_TYPES.get(m["cls"], m["cls"]), reason)
+
+
+def _content_model_reason(error: XMLSchemaChildrenValidationError) -> str:
+    parent = etree.QName(error.elem).localname if error.elem is not None else "the element"
+    expected = " or ".join(f"<{tag}>" for tag in getattr(error, "expected_tags", ()) or ())
+    child = error.invalid_child
+    if child is not None:
+        found = f"<{etree.QName(child).localname}> is not allowed here (child {error.index + 1} of <{parent}>)"
+        return f"{found}; the schema expects {expected}" if expected else found
+    if expected:
+        return f"<{parent}> is incomplete: the schema expects {expected} after its last child"
+    return f"<{parent}> is incomplete"
 
 
 #: The names ``--schema`` accepts: a profile kind or the file name of its schema.

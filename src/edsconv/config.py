@@ -94,13 +94,13 @@ class Settings:
 
     def describe(self, path: str | Path) -> str:
         """The settings in force for ``path``, one ``key = value  # origin`` line each (``lint --show-settings``)."""
-        lines = [f"# {path}", f"# configuration: {self.source or 'none found'}"]
+        lines = [f"# {path}", f"# configuration: {_shown(self.source) if self.source else 'none found'}"]
         values: dict[str, object] = {"select": list(self.select), "extend-select": list(self.extend_select),
                                      "ignore": list(self.ignore),
                                      "per-file-ignores": {glob: list(codes) for glob, codes in self.per_file_ignores},
                                      "warnings-as-errors": self.warnings_as_errors, "exclude": list(self.exclude)}
         for key, value in values.items():
-            lines.append(f"{key} = {_toml(value)}  # {self.origin(key)}")
+            lines.append(f"{key} = {_toml(value)}  # {_shown(self.origin(key))}")
         rules = self.for_file(path)
         lines.append(f"# per-file ignores matching this file: {_toml(list(rules.dropped))}")
         lines.append(f"# excluded from directory searches: {_toml(self.excludes(path))}")
@@ -276,6 +276,14 @@ class _Lines:
             if any(re.search(rf"(^|[\s\"'{{,\[.]){re.escape(n)}", text) for n in needles):
                 return index + 1
         return self.first + 1
+
+
+def _shown(where: str) -> str:
+    """A path (or ``path:line``) relative to the working directory when it lies below it, as printed."""
+    if not os.path.isabs(where):
+        return where
+    relative = _relative(where, Path.cwd())
+    return where if relative.is_absolute() else relative.as_posix()
 
 
 def _relative(path: str | Path, root: Path) -> PurePath:

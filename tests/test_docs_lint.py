@@ -51,6 +51,16 @@ def test_the_console_sessions_print_what_the_page_shows(tmp_path: Path):
     assert ran >= 6
 
 
+def test_the_console_session_of_the_readme_runs_as_written():
+    env = {**os.environ, "PATH": os.pathsep.join([str(Path(sys.executable).parent), os.environ.get("PATH", "")])}
+    consoles = [body for info, body in blocks((REPO / "README.md").read_text(encoding="utf-8")) if info == "console"]
+    assert consoles
+    for command, expected in (pair for body in consoles for pair in sessions(body)):
+        result = subprocess.run(["bash", "-c", command + " 2>&1"], cwd=REPO, env=env, capture_output=True, text=True,
+                                timeout=120)
+        assert result.stdout == expected, f"$ {command}"
+
+
 def test_the_workflow_on_the_page_is_the_example_that_actionlint_checks():
     workflow = (REPO / "docs" / "examples" / "github-workflow.yml").read_text(encoding="utf-8")
     body = workflow[workflow.index("name: EDS files"):]

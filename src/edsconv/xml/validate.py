@@ -12,7 +12,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from lxml import etree
 
@@ -206,13 +206,15 @@ def _schema_diagnostics(document: XmlDocument, report: FileReport) -> Iterable[D
     """One XML003 per schema error, at the element at fault: for a content-model error the child that
     is not allowed (libxml2 and Xerces point there too), not its parent."""
     kind = report.kind
+    assert kind is not None and kind.xsd is not None  # the caller checked both
     for error in load_schema(kind.xsd).iter_errors(document.tree):
-        child = getattr(error, "invalid_child", None)
-        at = child if child is not None else error.elem
+        # the document is an lxml tree, so xmlschema's elements are lxml's
+        child = cast("etree._Element | None", getattr(error, "invalid_child", None))
+        at = child if child is not None else cast("etree._Element | None", error.elem)
         line, column = document.position(at) if at is not None else (0, 0)
         path = error.path or "/"
         if child is not None:
-            path = f"{path.rstrip('/')}/{etree.QName(child).localname}"
+            path = f"{path.rstrip('/')}/{_name(child)}"
         diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{schema_reason(error)} (at {path})", line, column,
                                    report.path)
         diagnostic.clause = f"ISO 15745-4 {kind.clause}"
@@ -246,12 +248,17 @@ def schema_reason(error: XMLSchemaValidationError) -> str:
     return _PYTHON_CLASS.sub(lambda m: _XSD_TYPES.get(m["cls"], m["cls"]), reason)
 
 
+def _name(element: object) -> str:
+    """The local name of an element of the document (an lxml element)."""
+    return etree.QName(cast(etree._Element, element)).localname
+
+
 def _content_model_reason(error: XMLSchemaChildrenValidationError) -> str:
-    parent = etree.QName(error.elem).localname if error.elem is not None else "the element"
+    parent = _name(error.elem) if error.elem is not None else "the element"
     expected = " or ".join(f"<{tag}>" for tag in getattr(error, "expected_tags", ()) or ())
     child = error.invalid_child
     if child is not None:
-        found = f"<{etree.QName(child).localname}> is not allowed here (child {error.index + 1} of <{parent}>)"
+        found = f"<{_name(child)}> is not allowed here (child {error.index + 1} of <{parent}>)"
         return f"{found}; the schema expects {expected}" if expected else found
     if expected:
         return f"<{parent}> is incomplete: the schema expects {expected} after its last child"

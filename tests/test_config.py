@@ -138,3 +138,9 @@ def test_overrides_keep_the_file_origins():
     settings = Overrides(ignore=("EDS2",)).apply(Resolver(Overrides(isolated=True)).settings_for("x.eds"))
     assert settings.ignore == ("EDS2",) and settings.origin("ignore") == "command line"
     assert settings.origin("select") == "default"
+
+
+def test_show_settings_of_a_directory_reads_the_configuration_inside_it(project: Path):
+    (project / "eds" / "edsconv.toml").write_text('ignore = ["EDS2"]\n', encoding="utf-8")
+    lines = run("lint", "--show-settings", str(project / "eds")).stdout.splitlines()
+    assert lines[1] == f"# configuration: {project / 'eds' / 'edsconv.toml'}"

@@ -165,7 +165,8 @@ class Resolver:
         elif self.overrides.config is not None:
             found = self.overrides.config
         else:
-            found = self.find(Path(os.path.abspath(path)).parent)
+            where = Path(os.path.abspath(path))
+            found = self.find(where if where.is_dir() else where.parent)
         base = Settings() if found is None else self._load(found)
         return self.overrides.apply(base)
 

@@ -127,3 +127,14 @@ def test_a_fix_that_would_overlap_another_waits_for_the_next_round():
                            fix.Fix("c", (fix.Edit(2, 1, 2, 1, "z"),))])
     assert [e.text for e in edits] == ["x", "z"]
     assert fix.apply_edits("abcdef\r\nline\rend", edits) == "xef\r\nzline\rend"
+
+
+def test_the_editor_gets_the_same_fix_for_an_unused_suppression():
+    from edsconv.lsp.actions import lint_fixes
+    from edsconv.lsp.analysis import analyse
+
+    text = broken(["EDS099"])
+    analysis = analyse(text, 1, "x.eds")
+    line = text.splitlines().index("        VendCode = 65535;   $ edsconv: ignore[EDS102]") + 1
+    (fix_,) = lint_fixes(analysis, "EDS099", line, text.splitlines()[line - 1].index("EDS102") + 1)
+    assert fix.apply_edits(text, fix_.edits) == GOOD

@@ -119,7 +119,7 @@ def _unused_suppression(eds: EdsFile, lines: list[str], d: Diagnostic) -> Fix | 
     """The code is removed from its comment, and the comment when it held nothing else."""
     text = _line(lines, d.line)
     match = next((m for m in SUPPRESSION.finditer(text) if m.start("codes") < d.column <= m.end("codes")), None)
-    if match is None or d.end_column is None:
+    if match is None:
         return None
     codes = [c for c in re.finditer(r"[^,\s]+", match["codes"]) if match.start("codes") + c.start() + 1 != d.column]
     if codes:

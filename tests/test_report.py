@@ -192,3 +192,58 @@ def test_docs_rules_md_is_what_the_registry_generates():
     headings = set(re.findall(r"^### (\S+)$", page, re.MULTILINE))
     missing = [r.code for r in report.all_rules() if r.code not in headings]
     assert not missing, f"docs/rules.md lacks a '### CODE' heading for {missing}"
+
+
+#: Microsoft's SARIF validator, with GitHub's ingestion rules (GH1xxx) besides the SARIF ones
+MULTITOOL_NPM = "@microsoft/sarif-multitool-linux@5.7.0"
+
+
+def sarif_multitool() -> Path:
+    import platform
+    import shutil
+    import subprocess
+
+    import pytest
+
+    from test_packaging import TOOL_CACHE
+
+    if platform.system() != "Linux" or platform.machine() not in ("x86_64", "AMD64"):
+        pytest.skip("the SARIF multitool package is built for Linux x64")
+    prefix = TOOL_CACHE / "sarif-multitool"
+    tool = prefix / "node_modules" / "@microsoft" / "sarif-multitool-linux" / "Sarif.Multitool"
+    if not tool.exists():
+        if not shutil.which("npm"):
+            pytest.skip("npm is needed to install the SARIF multitool")
+        prefix.mkdir(parents=True, exist_ok=True)
+        installed = subprocess.run(["npm", "install", "--silent", "--no-save", "--prefix", str(prefix), MULTITOOL_NPM],
+                                   capture_output=True, text=True, timeout=600)
+        if installed.returncode != 0 or not tool.exists():
+            pytest.skip(f"cannot install {MULTITOOL_NPM}: {installed.stderr.strip()[-300:]}")
+    return tool
+
+
+def multitool_findings(tool: Path, document: dict, where: Path) -> list[str]:
+    """The rule ids Microsoft's validator reports for ``document`` with the GitHub and SARIF rules."""
+    import subprocess
+
+    log, out = where / "log.sarif", where / "validation.sarif"
+    log.write_text(json.dumps(document), encoding="utf-8")
+    subprocess.run([str(tool), "validate", "--rule-kind", "Gh;Sarif", "--log", "ForceOverwrite", "-o", str(out),
+                    str(log)], capture_output=True, text=True, timeout=300, check=True)
+    return [r["ruleId"] for r in json.loads(out.read_text(encoding="utf-8"))["runs"][0]["results"]]
+
+
+def test_microsofts_validator_with_githubs_rules_finds_nothing(tmp_path: Path):
+    from edsconv.lint import lint_paths
+
+    tool = sarif_multitool()
+    (tmp_path / "broken.eds").write_bytes((REPO / "corpus" / "examples" / "io_adapter.eds").read_bytes()
+                                         .replace(b"ProdCode = 1001;", b"ProdCode = 01001;"))
+    (tmp_path / "gone.eds").symlink_to(tmp_path / "deleted.eds")
+    document = report.sarif_document(lint_paths([tmp_path], jobs=1), root=tmp_path)
+    assert len(document["runs"][0]["results"]) == 2
+    assert multitool_findings(tool, document, tmp_path) == []
+    # the validator does judge: without informationUri and a region it warns (SARIF2005, SARIF2017)
+    del document["runs"][0]["tool"]["driver"]["informationUri"]
+    del document["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["region"]
+    assert sorted(multitool_findings(tool, document, tmp_path)) == ["SARIF2005", "SARIF2017"]

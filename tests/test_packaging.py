@@ -54,7 +54,7 @@ def test_the_test_matrix_script_is_valid_bash_and_covers_every_allowed_python():
     assert os.access(script, os.X_OK)
     subprocess.run(["bash", "-n", str(script)], check=True)
     text = script.read_text(encoding="utf-8")
-    assert '-c "$root/.ci/constraints-min.txt"' in text and "pytest -q -n 2" in text
+    assert '-c "$root/.ci/constraints-min.txt"' in text and 'pytest -q -n 2 -m "not tools"' in text
     assert "pytest-xdist" in " ".join(PYPROJECT["project"]["optional-dependencies"]["test"])
     classifiers = PYPROJECT["project"]["classifiers"]
     floor = int(PYPROJECT["project"]["requires-python"].removeprefix(">=3."))
@@ -111,11 +111,13 @@ def actionlint(*files: Path) -> subprocess.CompletedProcess:
                            *map(str, files)], capture_output=True, text=True, timeout=120)
 
 
+@pytest.mark.tools
 def test_the_action_and_the_workflow_example_pass_actionlint():
     result = actionlint(REPO / "action.yml", REPO / "docs" / "examples" / "github-workflow.yml")
     assert (result.returncode, result.stdout) == (0, "")
 
 
+@pytest.mark.tools
 def test_actionlint_finds_a_broken_expression_in_the_action(tmp_path: Path):
     broken = tmp_path / "action.yml"
     broken.write_text((REPO / "action.yml").read_text(encoding="utf-8").replace(

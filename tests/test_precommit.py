@@ -42,6 +42,7 @@ def git(*args: str, cwd: Path) -> subprocess.CompletedProcess:
                           timeout=600)
 
 
+@pytest.mark.tools
 def test_the_hook_from_a_local_clone_blocks_a_broken_commit_and_lets_the_fixed_one_through(tmp_path: Path):
     head = git("rev-parse", "HEAD", cwd=REPO)
     if head.returncode != 0:

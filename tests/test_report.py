@@ -6,6 +6,8 @@ import json
 import re
 from pathlib import Path
 
+import pytest
+
 from conftest import REPO
 from edsconv import report, rule_docs
 from edsconv.diagnostics import Diagnostic, Severity
@@ -203,8 +205,6 @@ def sarif_multitool() -> Path:
     import shutil
     import subprocess
 
-    import pytest
-
     from test_packaging import TOOL_CACHE
 
     if platform.system() != "Linux" or platform.machine() not in ("x86_64", "AMD64"):
@@ -233,6 +233,7 @@ def multitool_findings(tool: Path, document: dict, where: Path) -> list[str]:
     return [r["ruleId"] for r in json.loads(out.read_text(encoding="utf-8"))["runs"][0]["results"]]
 
 
+@pytest.mark.tools
 def test_microsofts_validator_with_githubs_rules_finds_nothing(tmp_path: Path):
     from edsconv.lint import lint_paths
 

@@ -191,6 +191,8 @@ class FixOutcome:
     """The text after fixing, what was fixed, and the diagnostics of the fixed text."""
 
     data: bytes
+    #: the encoding the file was read in, and written back in
+    encoding: str
     fixed: list[Diagnostic] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
@@ -215,7 +217,7 @@ def fix_source(data: bytes, path: str | None, check: Callable[[EdsFile], list[Di
         data = encode(apply_edits(text, edits), eds.encoding)
         eds = parse(data, path)
         diagnostics = check(eds)
-    return FixOutcome(data, fixed, diagnostics)
+    return FixOutcome(data, eds.encoding, fixed, diagnostics)
 
 
 def raw_text(data: bytes, encoding: str) -> str:

@@ -122,8 +122,7 @@ def _fixed(path: str, data: bytes, rules: FileRules, fix: FixMode) -> FileReport
     if outcome.data == data:
         return report
     if fix is FixMode.DIFF:
-        encoding = parse(data, path).encoding
-        old, new = raw_text(data, encoding), raw_text(outcome.data, encoding)
+        old, new = raw_text(data, outcome.encoding), raw_text(outcome.data, outcome.encoding)
         report.diff = "".join(difflib.unified_diff(old.splitlines(keepends=True), new.splitlines(keepends=True),
                                                    path, f"{path} (fixed)"))
         return report

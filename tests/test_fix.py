@@ -138,3 +138,22 @@ def test_the_editor_gets_the_same_fix_for_an_unused_suppression():
     line = text.splitlines().index("        VendCode = 65535;   $ edsconv: ignore[EDS102]") + 1
     (fix_,) = lint_fixes(analysis, "EDS099", line, text.splitlines()[line - 1].index("EDS102") + 1)
     assert fix.apply_edits(text, fix_.edits) == GOOD
+
+
+def test_a_fixer_is_used_only_for_a_rule_whose_fix_is_safe(monkeypatch):
+    """A rule without a safe fix (none, or unsafe) is never repaired, even if a fixer were registered."""
+    import dataclasses
+
+    from edsconv.diagnostics import load_rules
+
+    text = broken(["EDS103"])
+    eds = parse(text, "x.eds")
+    (diagnostic,) = [d for d in lint.check(eds) if d.code == "EDS103"]
+    lines = fix.split_lines(text)
+    assert fix.fix_for(eds, lines, diagnostic) is not None
+    rules = dict(load_rules().rules)
+    rules["EDS103"] = dataclasses.replace(rules["EDS103"], fix=FixSafety.UNSAFE)
+    monkeypatch.setattr(fix, "load_rules", lambda: dataclasses.replace(load_rules(), rules=rules))
+    assert fix.fix_for(eds, lines, diagnostic) is None
+    outcome = fix.fix_source(text.encode(), "x.eds", lint.check)
+    assert outcome.data == text.encode() and outcome.fixed == []

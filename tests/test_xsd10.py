@@ -27,7 +27,7 @@ import edsconv
 from conftest import REPO, SHARED_REAL
 from edsconv.resources import data_dir
 from edsconv.xml.commnet import commnet_profile
-from edsconv.xml.common import Header
+from edsconv.xml.common import Header, InvalidProfile, serialise
 from edsconv.xml.device import device_profile
 from edsconv.xml.schemas import PROFILE_KINDS, kind_named, load_schema, load_write_validator, write_validator_path
 
@@ -200,3 +200,20 @@ def test_eds2xml_documents_get_the_same_verdicts(path):
         assert_outside_the_deviation(root)
         assert [e.tag for e in qualify_undeclared(root, kind_name).iter(f"{{{FOREIGN}}}*")] == []
         assert verdicts(kind_name, root) == (True, True)
+
+
+def test_serialise_writes_a_valid_document_the_rendition_rejects():
+    """The deviation costs speed, never a valid document: the restored schema decides."""
+    root = etree.parse(str(CORPUS_XML / "cip-device" / "valid-complete.xml")).getroot()
+    assert verdicts("cip-device", root) == (True, False)
+    assert etree.fromstring(serialise(root, "cip-device")).find(".//VendorNote") is not None
+
+
+def test_serialise_reports_an_invalid_document_as_validate_words_it():
+    root = etree.parse(str(CORPUS_XML / "cip-device" / "invalid-eds-revision.xml")).getroot()
+    with pytest.raises(InvalidProfile) as raised:
+        serialise(root, "cip-device")
+    schema = load_schema(kind_named("cip-device").xsd)
+    expected = [f"{error.path}: {error.reason}" for error in schema.iter_errors(root)]
+    assert raised.value.problems == expected and expected
+    assert any("Revision" in problem for problem in raised.value.problems)

@@ -256,21 +256,24 @@ def _port_fits(port: Port, ids: set[str]) -> bool:
 
 
 def _port_element(port: Port, tag: str, **attributes: str) -> etree._Element:
+    """A Port, or an edsconv:Port whose children are in the edsconv namespace too: an element without
+    namespace inside an extension would be validated against the schema's global declarations."""
+    namespace = tag[:tag.index("}") + 1] if tag.startswith("{") else ""
     element = etree.Element(tag, id=f"Port{port.number}", **attributes)
     extensions = []
     if port.type_name is not None:
-        etree.SubElement(element, "PortTypeName").text = xml_text(port.type_name)
+        etree.SubElement(element, namespace + "PortTypeName").text = xml_text(port.type_name)
         if not is_xml_text(port.type_name):
             extensions.append(_text_extension("Value", port.type_name, field="PortTypeName"))
     if port.name is not None:
-        etree.SubElement(element, "PortName").text = xml_text(port.name)
+        etree.SubElement(element, namespace + "PortName").text = xml_text(port.name)
         if not is_xml_text(port.name):
             extensions.append(_text_extension("Value", port.name, field="PortName"))
     if port.object_path is not None:
-        etree.SubElement(element, "PortObject").text = _path_text(port.object_path)
+        etree.SubElement(element, namespace + "PortObject").text = _path_text(port.object_path)
     if port.port_number is not None:
-        etree.SubElement(element, "PortNumber").text = str(port.port_number)
-    specific = etree.SubElement(element, "PortSpecific")
+        etree.SubElement(element, namespace + "PortNumber").text = str(port.port_number)
+    specific = etree.SubElement(element, namespace + "PortSpecific")
     specific.extend(_specific_elements(port.specific))
     element.extend(extensions)
     return element
@@ -504,7 +507,8 @@ class _Reader:
             return None
         port = Port(int(match[2]))
         for child in element:
-            tag = child.tag
+            # an edsconv:Port's children are in its namespace, a Port's in none
+            tag = etree.QName(child).localname if child.tag != EDSCONV + "Value" else child.tag
             try:
                 if tag == "PortTypeName":
                     port.type_name = (child.text or "").strip()

@@ -277,7 +277,9 @@ def min_max_rule(type_name: str) -> MinMaxRule:
 # Field value kinds beyond data types, and field keywords
 # ---------------------------------------------------------------------------
 
-_N = "[1-9][0-9]{0,4}"
+#: An entry's instance number as the C.3 XSD patterns write it (1 .. 99999).
+INSTANCE_NUMBER = "[1-9][0-9]{0,4}"
+_N = INSTANCE_NUMBER
 #: Non-data-type values a field may hold: kind -> regular expression of the
 #: value (None when it is not a lexical form), following the C.3 XSD patterns.
 FIELD_VALUE_KINDS: Mapping[str, str | None] = MappingProxyType({
@@ -298,6 +300,21 @@ FIELD_VALUE_KINDS: Mapping[str, str | None] = MappingProxyType({
     #: Nothing: reserved fields and pads.
     "Empty": None,
 })
+
+#: Every keyword an EDS field may name another entry by: ParamN, ProxyParamN, AssemN,
+#: ProxyAssemN (C.4.1.4.8, C.4.1.4.9, C.4.1.5.3), AssemExaN (the extended assembly of CIP
+#: editions after 2003, which real files name where an AssemN may stand) and a bit of a
+#: parameter (``Param10:0``, newer files). Groups: family, number, bit.
+REFERENCE_RE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
+#: C.4.1.4.9.13: a parameter substituted into a path, ``[ParamN]`` or ``ProxyParamN``.
+PATH_REFERENCE_RE = re.compile(r"(?:Proxy)?Param[1-9][0-9]*")
+#: The lexical spaces of references in CIPDataTypes.xsd (C.3): et_ParamReference,
+#: et_AssemReference, and the parameter items of et_EPATH_item.
+XSD_PARAM_REFERENCE_RE = re.compile(f"(?:Proxy)?Param{INSTANCE_NUMBER}(?::[0-9]{{1,2}})*")
+XSD_ASSEM_REFERENCE_RE = re.compile(f"(?:Proxy)?Assem{INSTANCE_NUMBER}")
+XSD_PATH_REFERENCE_RE = re.compile(rf"\[?(?:Proxy)?Param{INSTANCE_NUMBER}\]?")
+#: A vendor-specific keyword as the C.2/C.3 XSD patterns write it (main classification, port type).
+XSD_VENDOR_KEYWORD = f"{INSTANCE_NUMBER}_[A-Za-z0-9][A-Za-z0-9_]*"
 
 #: C.4.1.2.2.11: vendor-specific keywords (entries, sections, field keywords).
 VENDOR_KEYWORD_RE = re.compile(r"[1-9][0-9]*_[A-Za-z0-9_]+")

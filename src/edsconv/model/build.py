@@ -63,10 +63,6 @@ UNKNOWN_DATA_TYPE = rule(
 _REFERENCE_KINDS = ("ParamRef", "ProxyParamRef", "AssemRef", "ProxyAssemRef")
 _REFERENCE = {kind: re.compile(tables.FIELD_VALUE_KINDS[kind]) for kind in _REFERENCE_KINDS}
 _MEMBER_KEYWORD = re.compile(tables.FIELD_VALUE_KINDS["MemberKeyword"])
-_NUMBERED_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
-# AssemExaN: the extended assembly of CIP editions after 2003 (its size may be a
-# ParamN); real files name it where an AssemN may stand.
-_NEWER_ASSEMBLY = re.compile(r"AssemExa[1-9][0-9]*")
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,13 +85,6 @@ def _plan(type_name: str) -> _Plan:
     names = " or ".join(kind.removesuffix("Ref") + "N" if kind in _REFERENCE else kind for kind in kinds)
     return _Plan(tuple(_REFERENCE[k] for k in kinds if k in _REFERENCE), "AssemRef" in kinds,
                  "MemberKeyword" in kinds, "EPATH" in kinds, data_types[0] if data_types else None, names)
-
-
-def reference(keyword: str, entry: Entry | None = None, field_index: int = 0) -> Reference:
-    """A Reference from ``Param3``; newer files also address a bit: ``Param10:0``."""
-    family, number, bit = _NUMBERED_REFERENCE.fullmatch(keyword).groups()
-    return Reference(f"{family}{number}", family, int(number), entry=entry, field_index=field_index,
-                     bit=int(bit) if bit is not None else None)
 
 
 def plain(value: Value | None):
@@ -151,10 +140,11 @@ class _Builder:
             raw = value.raw
             if proxy and raw in (MODULE, MODULE_MEMBER_LIST):
                 return raw
-            bare = raw.partition(":")[0]
-            if any(pattern.fullmatch(bare) for pattern in plan.references) or (
-                    plan.newer_assembly and _NEWER_ASSEMBLY.fullmatch(raw)):
-                return reference(raw, entry, index)
+            found = Reference.parse(raw, entry, index)
+            # AssemExaN (no bit) stands where an AssemN may (see spec_tables.REFERENCE_RE)
+            if found is not None and (any(pattern.fullmatch(found.keyword) for pattern in plan.references) or (
+                    plan.newer_assembly and found.family == "AssemExa" and found.bit is None)):
+                return found
             if plan.member_keyword and _MEMBER_KEYWORD.fullmatch(raw):
                 return raw
         if plan.path and isinstance(value, String):

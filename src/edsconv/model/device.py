@@ -45,6 +45,21 @@ class Reference:
     def __str__(self) -> str:
         return self.keyword
 
+    @property
+    def text(self) -> str:
+        """The reference as written: ``Param3``, ``Param10:0``."""
+        return self.keyword if self.bit is None else f"{self.keyword}:{self.bit}"
+
+    @classmethod
+    def parse(cls, text: str, entry: Entry | None = None, field_index: int = 0) -> Reference | None:
+        """The reference ``text`` writes (:data:`~edsconv.spec_tables.REFERENCE_RE`); None when it is none."""
+        match = tables.REFERENCE_RE.fullmatch(text)
+        if match is None:
+            return None
+        family, number, bit = match.groups()
+        return cls(f"{family}{number}", family, int(number), entry=entry, field_index=field_index,
+                   bit=int(bit) if bit is not None else None)
+
 
 @dataclass(slots=True)
 class FileDescription:

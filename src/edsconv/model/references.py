@@ -24,7 +24,8 @@ from edsconv.model import Device, Reference
 from edsconv.model.build import iter_references
 
 #: A parameter substitution inside a path string, bracketed or not (C.4.1.4.9.13).
-_PATH_REFERENCE = re.compile(r"(?<![A-Za-z0-9_])((?:Proxy)?Param)([1-9][0-9]*)(?![A-Za-z0-9_])")
+# a path reference standing alone: not part of a longer word
+_PATH_REFERENCE = re.compile(rf"(?<![A-Za-z0-9_]){tables.PATH_REFERENCE_RE.pattern}(?![A-Za-z0-9_])")
 
 
 @dataclass(frozen=True, slots=True)
@@ -135,8 +136,9 @@ def _path_references(eds: EdsFile, lines: Sequence[str]) -> Iterator[Occurrence]
                     continue
                 for line, column, part in _string_parts(item.value, item.line, item.column, lines):
                     for match in _PATH_REFERENCE.finditer(part):
-                        yield Occurrence(match.group(1) + match.group(2), line, column + match.start(),
-                                         column + match.end(), match.group(1), "path", entry.keyword)
+                        family = tables.split_numbered(match.group())[0]
+                        yield Occurrence(match.group(), line, column + match.start(),
+                                         column + match.end(), family, "path", entry.keyword)
 
 
 def _string_parts(value: String, line: int, column: int, lines: Sequence[str]) -> Iterator[tuple[int, int, str]]:

@@ -447,7 +447,7 @@ def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]
         name = match["bracketed"] or match["word"]
         if name in tables.PATH_KEYWORDS and not match["bracketed"]:
             items.append(PathItem(keyword=name))
-        elif re.fullmatch(r"(?:Proxy)?Param[1-9][0-9]*", name):
+        elif tables.PATH_REFERENCE_RE.fullmatch(name):
             items.append(PathItem(reference=name, local=bool(match["bracketed"])))
         else:
             raise ValueProblem(BAD_EPATH, f"path {text!r}: {name!r} is neither a byte, [ParamN], ParamN nor "

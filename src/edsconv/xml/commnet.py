@@ -50,14 +50,10 @@ from edsconv.xml.common import (
 #: Connection families in the order the schema's ConnectionDescriptions sequence wants them.
 FAMILIES = ("Connection", "ProxyConnect", "ProxiedConnect")
 
-_N = "[1-9][0-9]{0,4}"
-# The lexical spaces of CIPDataTypes.xsd / ENet_CommNet_Profile.xsd the writer must meet.
-_PARAM_REFERENCE = re.compile(f"(?:Proxy)?Param{_N}(?::[0-9]{{1,2}})*")  # et_ParamReference
-_ASSEM_REFERENCE = re.compile(f"(?:Proxy)?Assem{_N}")  # et_AssemReference
-_PORT_TYPE = re.compile(f"ControlNet|ControlNet_Redundant|TCP|DeviceNet|{_N}_[A-Za-z0-9][A-Za-z0-9_]*")
+_N = tables.INSTANCE_NUMBER
+# The lexical spaces of ENet_CommNet_Profile.xsd the writer must meet.
+_PORT_TYPE = re.compile("|".join((*tables.PORT_TYPE_KEYWORDS, tables.XSD_VENDOR_KEYWORD)))
 _ENTRY_ID = {family: re.compile(f"{family}{_N}") for family in (*FAMILIES, "Port")}
-# What a reader accepts: every reference the model knows (AssemExaN from newer files too).
-_ANY_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
 _ANY_KEYWORD = re.compile(r"(Connection|ProxyConnect|ProxiedConnect|Port)([1-9][0-9]*)")
 _ESCAPE = re.compile(r"\\(\\|u[0-9A-Fa-f]{4})")
 
@@ -129,10 +125,6 @@ def _text_extension(tag: str, text: str, **attributes: str) -> etree._Element:
     return _ext(tag, _escape(text), escaped="true", **attributes)
 
 
-def _reference_text(reference: Reference) -> str:
-    return reference.keyword + (f":{reference.bit}" if reference.bit is not None else "")
-
-
 def _path_text(path: Iterable[PathItem]) -> str:
     return " ".join(str(item) for item in path)
 
@@ -148,8 +140,10 @@ def _schema_text(field: _Field, value: Any) -> str | None:
             return str(value)
         return None
     if isinstance(value, Reference) and field.kind in ("rpi", "size", "format"):
-        text = _reference_text(value)
-        forms = (_PARAM_REFERENCE, _ASSEM_REFERENCE) if field.kind == "format" else (_PARAM_REFERENCE,)
+        text = value.text
+        forms = (tables.XSD_PARAM_REFERENCE_RE,)
+        if field.kind == "format":
+            forms += (tables.XSD_ASSEM_REFERENCE_RE,)
         return text if any(form.fullmatch(text) for form in forms) else None
     return None
 
@@ -157,7 +151,7 @@ def _schema_text(field: _Field, value: Any) -> str | None:
 def _value_extension(field: _Field, value: Any) -> etree._Element:
     """edsconv:Value holding a value the field's element cannot."""
     if isinstance(value, Reference):
-        return _ext("Value", _reference_text(value), field=field.tag)
+        return _ext("Value", value.text, field=field.tag)
     if isinstance(value, tuple):
         return _ext("Value", _path_text(value), field=field.tag)
     if isinstance(value, str):
@@ -404,11 +398,10 @@ class _Reader:
     # values
     @staticmethod
     def reference(text: str) -> Reference:
-        match = _ANY_REFERENCE.fullmatch(text)
-        if match is None:
+        found = Reference.parse(text)
+        if found is None:
             raise ValueProblem(WRONG_KIND, f"{text!r} is neither a number nor a ParamN / AssemN reference")
-        family, number, bit = match.groups()
-        return Reference(f"{family}{number}", family, int(number), bit=int(bit) if bit is not None else None)
+        return found
 
     def number_or_reference(self, text: str) -> int | Reference:
         text = text.strip()

@@ -51,7 +51,7 @@ from edsconv.model import (
     Reference,
     Scaling,
 )
-from edsconv.model.build import iter_references, reference
+from edsconv.model.build import iter_references
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
 
@@ -90,13 +90,8 @@ DEFAULT_STRINGI = ("eng", 0xD0, 4)
 
 _PARAM_TAGS = ("Param", "ProxyParam", "ProxiedParam")
 _ASSEM_TAGS = ("Assem", "ProxyAssem", "ProxiedAssem")
-_ID_NUMBER = "[1-9][0-9]{0,4}"
 _NMTOKEN = re.compile(r"[\w.\-:]+")
-_MAIN_CLASS = re.compile("ControlNet|DeviceNet|EtherNetIP|[1-9][0-9]{0,4}_[A-Za-z0-9][A-Za-z0-9_]*")
-_PARAM_REFERENCE = re.compile(rf"(?:Proxy)?Param{_ID_NUMBER}(?::[0-9]{{1,2}})*")
-_ASSEM_REFERENCE = re.compile(rf"(?:Proxy)?Assem{_ID_NUMBER}")
-_ANY_REFERENCE = re.compile(r"(?:ProxyParam|ProxyAssem|Param|AssemExa|Assem)[1-9][0-9]*(?::[0-9]+)?")
-_PATH_REFERENCE = re.compile(rf"\[?(?:Proxy)?Param{_ID_NUMBER}\]?")
+_MAIN_CLASS = re.compile("|".join((*tables.CLASSIFICATION_KEYWORDS, tables.XSD_VENDOR_KEYWORD)))
 _REVISION = re.compile(r"[0-9]\.[1-9]|[1-9]\.[0-9]")
 # characters XML 1.0 cannot carry (and lone surrogates, which UTF-8 cannot)
 
@@ -170,13 +165,9 @@ def _path_text(value) -> str | None:
         return None
     for item in value:
         if item.byte is None and item.keyword not in tables.PATH_KEYWORDS and \
-                not (item.reference and _PATH_REFERENCE.fullmatch(item.reference)):
+                not (item.reference and tables.XSD_PATH_REFERENCE_RE.fullmatch(item.reference)):
             return None
     return " ".join(str(item) for item in value)
-
-
-def _reference_text(value) -> str:
-    return value.keyword + (f":{value.bit}" if value.bit is not None else "")
 
 
 def _value_text(value) -> str | None:
@@ -258,7 +249,8 @@ def _unique(items, prefix: str) -> list:
     """The numbered objects whose ``<prefix>N`` id is valid and not taken by an earlier one."""
     seen, kept = set(), []
     for item in items:
-        if isinstance(item.number, int) and re.fullmatch(_ID_NUMBER, str(item.number)) and item.number not in seen:
+        number = item.number
+        if isinstance(number, int) and re.fullmatch(tables.INSTANCE_NUMBER, str(number)) and number not in seen:
             seen.add(item.number)
             kept.append(item)
     return kept
@@ -270,8 +262,8 @@ def _write_modular(modular: Modular) -> etree._Element | None:
         chassis = etree.SubElement(element, "Chassis")
         _leaf(chassis, "DefineSlotsInRack", str(modular.define_slots_in_rack))
         rule_ = modular.slot_display_rule
-        if isinstance(rule_, Reference) and _PARAM_REFERENCE.fullmatch(_reference_text(rule_)):
-            _leaf(chassis, "SlotDisplayRule", _reference_text(rule_))
+        if isinstance(rule_, Reference) and tables.XSD_PARAM_REFERENCE_RE.fullmatch(rule_.text):
+            _leaf(chassis, "SlotDisplayRule", rule_.text)
         return element
     racks = [r for r in _unique(modular.racks, "Rack") if r.legal_slots and
              all(_number(s, "UINT") is not None for s in r.legal_slots)]
@@ -312,13 +304,13 @@ def _write_application_process(device: Device) -> etree._Element | None:
             _write_param_class(parameter, device.param_class)
         for tag in _PARAM_TAGS:
             for item in device.parameters.values():
-                if item.family == tag and re.fullmatch(tag + _ID_NUMBER, item.keyword):
+                if item.family == tag and re.fullmatch(tag + tables.INSTANCE_NUMBER, item.keyword):
                     _write_parameter(parameter, item)
     if device.assemblies:
         assembly = etree.SubElement(process, "Assembly")
         for tag in _ASSEM_TAGS:
             for item in device.assemblies.values():
-                if item.family == tag and re.fullmatch(tag + _ID_NUMBER, item.keyword):
+                if item.family == tag and re.fullmatch(tag + tables.INSTANCE_NUMBER, item.keyword):
                     _write_assembly(assembly, item)
     groups = [g for g in _unique(device.groups, "Group")]
     if groups:
@@ -330,8 +322,8 @@ def _write_application_process(device: Device) -> etree._Element | None:
             for member in group.members:
                 if member.family == "Param" and member.bit is None and _number(member.number, "UINT"):
                     _leaf(element, "ParameterRef", str(member.number))
-                elif _NMTOKEN.fullmatch(_reference_text(member)):
-                    _leaf(element, "VariantRef", _reference_text(member))
+                elif _NMTOKEN.fullmatch(member.text):
+                    _leaf(element, "VariantRef", member.text)
     return process if len(process) else None
 
 
@@ -406,8 +398,8 @@ def _write_assembly(parent, item: Assembly) -> None:
 
 def _member_text(value) -> str | None:
     if isinstance(value, Reference):
-        text = _reference_text(value)
-        return text if _PARAM_REFERENCE.fullmatch(text) or _ASSEM_REFERENCE.fullmatch(text) \
+        text = value.text
+        return text if tables.XSD_PARAM_REFERENCE_RE.fullmatch(text) or tables.XSD_ASSEM_REFERENCE_RE.fullmatch(text) \
             or _NMTOKEN.fullmatch(text) else None
     if isinstance(value, int):
         return _number(value, "UDINT")
@@ -539,7 +531,7 @@ def _encode(element, value) -> None:
         element.text = value.name
     elif isinstance(value, Reference):
         element.set("kind", "ref")
-        element.text = _reference_text(value)
+        element.text = value.text
     elif isinstance(value, tuple) and value and all(isinstance(item, PathItem) for item in value):
         element.set("kind", "path")
         element.text = " ".join(str(item) for item in value)
@@ -786,8 +778,9 @@ def _member_reference(text: str):
     text = text.strip()
     if re.fullmatch("[0-9]+", text):
         return int(text)
-    if _ANY_REFERENCE.fullmatch(text):
-        return reference(text)
+    found = Reference.parse(text)
+    if found is not None:
+        return found
     try:
         return path_items(text)
     except ValueError:
@@ -795,9 +788,10 @@ def _member_reference(text: str):
 
 
 def _reference(text: str) -> Reference:
-    if not _ANY_REFERENCE.fullmatch(text.strip()):
+    found = Reference.parse(text.strip())
+    if found is None:
         raise ValueError(text)
-    return reference(text.strip())
+    return found
 
 
 def _stringi(text: str) -> tuple[StringIMember, ...]:

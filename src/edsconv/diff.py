@@ -20,8 +20,10 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from edsconv import spec_tables as tables
 from edsconv.eds.syntax import Group, Scalar, String
 from edsconv.model import (
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     AssemblyMember,
     Connection,
@@ -161,12 +163,16 @@ class _Differ:
                 self.changes.append(Change("added", key, None, label(record), category))
 
 
-_FILE = {"description": "", "create_date": "", "create_time": "", "mod_date": "", "mod_time": "", "revision": "",
-         "home_url": ""}
-_IDENTITY = {"vendor_code": "UINT", "vendor_name": "", "product_type": "UINT", "product_type_string": "",
-             "product_code": "UINT", "major_revision": "USINT", "minor_revision": "USINT", "product_name": "",
-             "catalog": "", "icon": "", "exclude_from_adapter_rack_connection": ""}
-_PARAM_CLASS = {"max_instances": "UINT", "descriptor": "WORD", "cfg_assembly": "UINT"}
+def _single_entry_types(section: str) -> dict[str, str]:
+    """attribute -> the type its [File] / [Device] / [ParamClass] / [Modular] entry is written in."""
+    specs = {spec.keyword: spec for spec in tables.SECTIONS[section].entries}
+    return {attribute: specs[keyword].fields[0].alternatives[0]
+            for keyword, attribute in SINGLE_ENTRY_ATTRIBUTES[section].items()}
+
+
+_FILE = _single_entry_types("File")
+_IDENTITY = _single_entry_types("Device")
+_PARAM_CLASS = _single_entry_types("ParamClass")
 _PARAMETER = {"link_path_size": "USINT", "link_path": "EPATH", "descriptor": "WORD", "data_type_code": "code",
               "data_size": "USINT", "name": "", "units": "", "help": "", "minimum": "", "maximum": "",
               "default": "", "international_name": "", "international_units": "", "international_help": ""}
@@ -176,8 +182,7 @@ _ASSEMBLY = {"name": "", "path": "EPATH", "size": "UINT", "descriptor": "WORD", 
 _CONNECTION = {"trigger_transport": "DWORD", "parameters": "DWORD"}
 _ENDPOINTS = (("o_to_t", "O=>T"), ("t_to_o", "T=>O"), ("config1", "config #1"), ("config2", "config #2"))
 _PORT = {"type_name": "Keyword", "name": "", "object_path": "EPATH", "port_number": "UINT", "specific": ""}
-_MODULAR = {"define_slots_in_rack": "UINT", "slot_display_rule": "", "width": "UINT", "external_id": "EPATH",
-            "generic_id": "EPATH", "extern_id_exact_match": "Keyword"}
+_MODULAR = _single_entry_types("Modular")
 _RACK = {"vendor_code": "UINT", "product_type": "UINT", "product_code": "UINT", "major_revision": "USINT",
          "minor_revision": "USINT", "legal_slots": ""}
 _QUERY = {"path": "EPATH", "service": "USINT", "id_size": "USINT", "empty_slot_id": "EPATH"}

@@ -873,6 +873,9 @@ PARAMS_ENTRIES = (
     EntrySpec("ProxiedEnum", True, "Params", ENUM_FIELDS, O, _MOD, "",
               "Enumeration of ProxiedParamN", pairs_with="ProxiedParam"),
 )
+#: The EnumN family of each parameter family: Param -> Enum, ProxyParam -> ProxyEnum ...
+ENUM_FAMILIES: Mapping[str, str] = MappingProxyType({
+    e.pairs_with: e.keyword for e in PARAMS_ENTRIES if e.pairs_with and e.fields is ENUM_FIELDS})
 
 # --- [Groups] (Table C.19) ---------------------------------------------------
 

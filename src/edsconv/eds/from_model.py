@@ -21,6 +21,7 @@ from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Se
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     Connection,
     Device,
@@ -28,7 +29,6 @@ from edsconv.model import (
     Parameter,
     Reference,
 )
-from edsconv.model.build import _Builder
 from edsconv.model.values import PathItem, Revision, StringIMember
 
 # ---------------------------------------------------------------------------------------
@@ -207,16 +207,8 @@ def _entry(keyword: str, values: list, required: int = 0) -> Entry:
 # Device -> syntax model
 # ---------------------------------------------------------------------------------------
 
-# the attribute each [File] / [Device] keyword lands in, as the builder maps them
-_FILE_ATTRIBUTES = _Builder._FILE_ATTRIBUTES
-_DEVICE_ATTRIBUTES = _Builder._DEVICE_ATTRIBUTES
-_PARAM_CLASS_ATTRIBUTES = {"MaxInst": "max_instances", "Descriptor": "descriptor", "CfgAssembly": "cfg_assembly"}
-_MODULAR_ATTRIBUTES = {"DefineSlotsInRack": "define_slots_in_rack", "SlotDisplayRule": "slot_display_rule",
-                       "Width": "width", "ExternalID": "external_id", "GenericID": "generic_id",
-                       "ExternIDExactMatch": "extern_id_exact_match"}
-
-
-def _singles(section: str, record, attributes: dict[str, str]) -> list[Entry]:
+def _singles(section: str, record) -> list[Entry]:
+    attributes = SINGLE_ENTRY_ATTRIBUTES[section]
     entries = []
     for spec in tables.SECTIONS[section].entries:
         attribute = attributes.get(spec.keyword)
@@ -228,22 +220,8 @@ def _singles(section: str, record, attributes: dict[str, str]) -> list[Entry]:
     return entries
 
 
-def _param_value_type(parameter: Parameter, attribute: str) -> str:
-    """The type the builder reads a minimum / maximum / default with (Table C.17)."""
-    data_type = parameter.data_type
-    if data_type is None:
-        return "plain"
-    if attribute != "default" and tables.min_max_rule(data_type.name).meaning == "length":
-        return "UINT"
-    if data_type.kind in ("string", "epath"):
-        return "EDS_Char_Array"
-    if data_type.kind == "stringi" or data_type.size is None:
-        return "plain"
-    return data_type.name
-
-
 def _param_values(parameter: Parameter, values, proxy: bool) -> list:
-    return [render_value(v, _param_value_type(parameter, a), proxy)
+    return [render_value(v, parameter.value_type(a), proxy)
             for v, a in zip(values, ("minimum", "maximum", "default"), strict=True)]
 
 
@@ -275,12 +253,10 @@ def _parameter_entries(parameter: Parameter) -> list[Entry]:
     if parameter.size_adder is not None:
         entries.append(_entry(f"ProxyParamSizeAdder{number}", _param_values(parameter, parameter.size_adder, False), 3))
     if parameter.enum is not None:
-        family = {"Param": "Enum", "ProxyParam": "ProxyEnum", "ProxiedParam": "ProxiedEnum"}[parameter.family]
-        data_type = parameter.data_type
-        key_type = data_type.name if data_type and data_type.kind in ("unsigned", "signed", "bits", "bool") else "LINT"
+        family = tables.ENUM_FAMILIES[parameter.family]
         values: list = []
         for key, text in parameter.enum.items():
-            values += [render_value(key, key_type), render_value(text, "EDS_Char_Array")]
+            values += [render_value(key, parameter.enum_key_type), render_value(text, "EDS_Char_Array")]
         entries.append(Entry(f"{family}{number}", [Field(v) for v in values] or [Field(None)]))
     return entries
 
@@ -324,14 +300,14 @@ def _family_sorted(records: dict, families: tuple[str, ...]):
 
 def _known_sections(device: Device) -> dict[str, list[Entry]]:
     out: dict[str, list[Entry]] = {}
-    out["File"] = _singles("File", device.file, _FILE_ATTRIBUTES)
-    out["Device"] = _singles("Device", device.identity, _DEVICE_ATTRIBUTES)
+    out["File"] = _singles("File", device.file)
+    out["Device"] = _singles("Device", device.identity)
     out["Device Classification"] = [
         _entry(f"Class{c.number}", [render_value(c.classification, "Keyword"),
                                     *(plain_value(s, keywords=True) for s in c.subclassifications)])
         for c in _numbered(device.classifications)]
     if device.param_class is not None:
-        entries = _singles("ParamClass", device.param_class, _PARAM_CLASS_ATTRIBUTES)
+        entries = _singles("ParamClass", device.param_class)
         out["ParamClass"] = entries or [Entry("MaxInst", [Field(None)])]
     out["Params"] = [e for p in _family_sorted(device.parameters, ("Param", "ProxyParam", "ProxiedParam"))
                      for e in _parameter_entries(p)]
@@ -357,7 +333,7 @@ def _known_sections(device: Device) -> dict[str, list[Entry]]:
     out["Port"] = ports
     modular = device.modular
     if modular is not None:
-        entries = _singles("Modular", modular, _MODULAR_ATTRIBUTES)
+        entries = _singles("Modular", modular)
         racks = [_entry(f"Rack{r.number}", [*(render_value(v, "UINT") for v in r.key), None, None, None,
                                              *(render_value(s, "UINT") for s in r.legal_slots)], 5)
                  for r in _numbered(modular.racks)]

@@ -8,6 +8,7 @@ the decoder of CIP paths for people and :mod:`edsconv.model.plain` model values 
 from edsconv.model.device import (
     MODULE,
     MODULE_MEMBER_LIST,
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     AssemblyMember,
     Classification,
@@ -34,5 +35,5 @@ __all__ = [
     "Assembly", "AssemblyMember", "Classification", "CommentNote", "Connection",
     "ConnectionEndpoint", "Device", "FileDescription", "GenericEntry", "GenericSection", "Identity",
     "MODULE", "MODULE_MEMBER_LIST", "Modular", "ParamClass", "Parameter", "ParameterGroup", "Port",
-    "Query", "Rack", "Reference", "Scaling",
+    "Query", "Rack", "Reference", "SINGLE_ENTRY_ATTRIBUTES", "Scaling",
 ]

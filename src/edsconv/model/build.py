@@ -20,6 +20,7 @@ from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String, Value, Val
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     AssemblyMember,
     Classification,
@@ -169,8 +170,8 @@ class _Builder:
     # --- sections --------------------------------------------------------------------
     def build(self) -> Device:
         handlers = {
-            "File": self.file_entry, "Device": self.device_entry, "Device Classification": self.classification,
-            "ParamClass": self.param_class, "Params": self.params_entry, "Groups": self.group,
+            "File": self.single_entry, "Device": self.single_entry, "Device Classification": self.classification,
+            "ParamClass": self.single_entry, "Params": self.params_entry, "Groups": self.group,
             "Assembly": self.assembly_entry, "Connection Manager": self.connection, "Port": self.port,
             "Modular": self.modular_entry,
         }
@@ -215,20 +216,16 @@ class _Builder:
     def single(self, entry: Entry, spec: tables.EntrySpec) -> Any:
         return self.value(entry, 0, spec.fields[0].eds_type)
 
-    _FILE_ATTRIBUTES = {"DescText": "description", "CreateDate": "create_date", "CreateTime": "create_time",
-                        "ModDate": "mod_date", "ModTime": "mod_time", "Revision": "revision", "HomeURL": "home_url"}
-    _DEVICE_ATTRIBUTES = {
-        "VendCode": "vendor_code", "VendName": "vendor_name", "ProdType": "product_type",
-        "ProdTypeStr": "product_type_string", "ProdCode": "product_code", "MajRev": "major_revision",
-        "MinRev": "minor_revision", "ProdName": "product_name", "Catalog": "catalog", "Icon": "icon",
-        "ExcludeFromAdapterRackConnection": "exclude_from_adapter_rack_connection",
-    }
-
-    def file_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        setattr(self.device.file, self._FILE_ATTRIBUTES[spec.keyword], self.single(entry, spec))
-
-    def device_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        setattr(self.device.identity, self._DEVICE_ATTRIBUTES[spec.keyword], self.single(entry, spec))
+    def single_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        """An entry of [File], [Device] or [ParamClass]: one field into its attribute."""
+        section = spec.section
+        if section == "File":
+            record: Any = self.device.file
+        elif section == "Device":
+            record = self.device.identity
+        else:
+            record = self.device.param_class = self.device.param_class or ParamClass()
+        setattr(record, SINGLE_ENTRY_ATTRIBUTES[section][spec.keyword], self.single(entry, spec))
 
     def classification(self, entry: Entry, spec: tables.EntrySpec) -> None:
         values = [plain(f.value) for f in entry.fields]
@@ -236,14 +233,9 @@ class _Builder:
         self.device.classifications.append(Classification(
             number, self.value(entry, 0, "Keyword"), tuple(v for v in values[1:] if v is not None), entry))
 
-    def param_class(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        param_class = self.device.param_class = self.device.param_class or ParamClass()
-        attribute = {"MaxInst": "max_instances", "Descriptor": "descriptor", "CfgAssembly": "cfg_assembly"}
-        setattr(param_class, attribute[spec.keyword], self.single(entry, spec))
-
     # --- [Params] ----------------------------------------------------------------------
     def params_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        if spec.keyword in ("Enum", "ProxyEnum", "ProxiedEnum"):
+        if spec.keyword in tables.ENUM_FAMILIES.values():
             self.enums.append((spec.pairs_with, entry))
         elif spec.keyword == "ProxyParamSizeAdder":
             self.size_adders.append(entry)
@@ -286,25 +278,15 @@ class _Builder:
         value = entry.fields[index].value
         if proxy and isinstance(value, Scalar) and value.raw == MODULE:
             return MODULE
-        data_type = parameter.data_type
-        if data_type is None:
-            return plain(value)
-        rule_ = tables.min_max_rule(data_type.name)
-        if attribute != "default" and rule_.meaning == "length":
-            return self.value(entry, index, "UINT")
-        if data_type.kind in ("string", "epath"):
-            return self.value(entry, index, "EDS_Char_Array")
-        if data_type.kind == "stringi" or data_type.size is None:
-            return plain(value)
-        return self.value(entry, index, data_type.name)
+        type_name = parameter.value_type(attribute)
+        return plain(value) if type_name == "plain" else self.value(entry, index, type_name)
 
     def attach_enums_and_adders(self) -> None:
         parameters = self.device.parameters
         for family, entry in self.enums:
             number = tables.split_numbered(entry.keyword)[1]
             parameter = parameters.get(f"{family}{number}")
-            type_name = parameter.data_type.name if parameter and parameter.data_type and \
-                parameter.data_type.kind in ("unsigned", "signed", "bits", "bool") else "LINT"
+            type_name = parameter.enum_key_type if parameter is not None else "LINT"
             enum: dict[int, str] = {}
             for index in range(0, len(entry.fields) - 1, 2):
                 key = self.value(entry, index, type_name)
@@ -396,10 +378,7 @@ class _Builder:
             v += [None] * (4 - len(v))
             modular.query = Query(*v[:4])
         else:
-            attribute = {"DefineSlotsInRack": "define_slots_in_rack", "SlotDisplayRule": "slot_display_rule",
-                         "Width": "width", "ExternalID": "external_id", "GenericID": "generic_id",
-                         "ExternIDExactMatch": "extern_id_exact_match"}[keyword]
-            setattr(modular, attribute, self.single(entry, spec))
+            setattr(modular, SINGLE_ENTRY_ATTRIBUTES["Modular"][keyword], self.single(entry, spec))
 
 
 def iter_references(device: Device) -> Iterator[Reference]:

@@ -13,7 +13,9 @@ a field that a Proxy entry defers to its Proxied entry holds :data:`MODULE`.
 from __future__ import annotations
 
 import datetime
+from collections.abc import Mapping
 from dataclasses import dataclass, field
+from types import MappingProxyType
 from typing import Any, NamedTuple
 
 from edsconv import spec_tables as tables
@@ -59,6 +61,26 @@ class Reference:
         family, number, bit = match.groups()
         return cls(f"{family}{number}", family, int(number), entry=entry, field_index=field_index,
                    bit=int(bit) if bit is not None else None)
+
+
+#: The model attribute of each single-field entry of [File], [Device], [ParamClass] and
+#: [Modular] (on FileDescription, Identity, ParamClass and Modular), in the order the
+#: records declare them.
+SINGLE_ENTRY_ATTRIBUTES: Mapping[str, Mapping[str, str]] = MappingProxyType({
+    "File": MappingProxyType({
+        "DescText": "description", "CreateDate": "create_date", "CreateTime": "create_time", "ModDate": "mod_date",
+        "ModTime": "mod_time", "Revision": "revision", "HomeURL": "home_url"}),
+    "Device": MappingProxyType({
+        "VendCode": "vendor_code", "VendName": "vendor_name", "ProdType": "product_type",
+        "ProdTypeStr": "product_type_string", "ProdCode": "product_code", "MajRev": "major_revision",
+        "MinRev": "minor_revision", "ProdName": "product_name", "Catalog": "catalog", "Icon": "icon",
+        "ExcludeFromAdapterRackConnection": "exclude_from_adapter_rack_connection"}),
+    "ParamClass": MappingProxyType({"MaxInst": "max_instances", "Descriptor": "descriptor",
+                                    "CfgAssembly": "cfg_assembly"}),
+    "Modular": MappingProxyType({
+        "DefineSlotsInRack": "define_slots_in_rack", "SlotDisplayRule": "slot_display_rule", "Width": "width",
+        "ExternalID": "external_id", "GenericID": "generic_id", "ExternIDExactMatch": "extern_id_exact_match"}),
+})
 
 
 @dataclass(slots=True)
@@ -155,6 +177,29 @@ class Parameter:
     #: ProxyParamSizeAdderN: (minimum, maximum, default) added to a ProxyParam's values
     size_adder: tuple[Any, Any, Any] | None = None
     entry: Entry | None = field(default=None, compare=False, repr=False)
+
+    def value_type(self, attribute: str) -> str:
+        """The type its ``minimum``, ``maximum`` or ``default`` is written in (Table C.17):
+        a data type name, ``UINT`` for a string's length bounds, ``EDS_Char_Array`` for
+        strings and paths, or ``plain`` (kept as written) when the type has no fixed size."""
+        data_type = self.data_type
+        if data_type is None:
+            return "plain"
+        if attribute != "default" and tables.min_max_rule(data_type.name).meaning == "length":
+            return "UINT"
+        if data_type.kind in ("string", "epath"):
+            return "EDS_Char_Array"
+        if data_type.kind == "stringi" or data_type.size is None:
+            return "plain"
+        return data_type.name
+
+    @property
+    def enum_key_type(self) -> str:
+        """The type of its EnumN values: its own integer type, LINT when it has none."""
+        data_type = self.data_type
+        if data_type is not None and data_type.kind in ("unsigned", "signed", "bits", "bool"):
+            return data_type.name
+        return "LINT"
 
     def descriptor_flags(self) -> list[str]:
         """The names of the Table C.15 bits set in the descriptor."""

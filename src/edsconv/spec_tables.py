@@ -229,8 +229,7 @@ EDS_URL_SCHEMES = ("http", "ftp", "file")
 #: C.4.1.3.5: the string type codes a STRINGI language member may name.
 STRINGI_STRING_TYPES = frozenset({0xD0, 0xD5, 0xD9, 0xDA})
 
-#: Table C.4: string escape sequences -> translation. ``\x`` takes two hex
-#: digits, ``\u`` four (and only in L"..." strings).
+#: Table C.4: the named string escape sequences -> the character each stands for.
 ESCAPE_SEQUENCES: Mapping[str, str] = MappingProxyType({
     "\\\\": "\\",
     "\\n": "\n",
@@ -242,9 +241,10 @@ ESCAPE_SEQUENCES: Mapping[str, str] = MappingProxyType({
     "\\a": "\a",
     '\\"': '"',
     "\\'": "'",
-    "\\x": "byte nn (two hex digits)",
-    "\\u": "16-bit nnnn (four hex digits), L-strings only",
 })
+#: Table C.4: the numeric escapes -> their count of hex digits: ``\xnn`` a byte,
+#: ``\unnnn`` a 16-bit character (only in L"..." strings).
+NUMERIC_ESCAPES: Mapping[str, int] = MappingProxyType({"\\x": 2, "\\u": 4})
 
 
 @dataclass(frozen=True, slots=True)

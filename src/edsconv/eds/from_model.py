@@ -35,8 +35,8 @@ from edsconv.model.values import PathItem, Revision, StringIMember
 # Values -> syntax
 # ---------------------------------------------------------------------------------------
 
-_NAMED_ESCAPES = {"\\": "\\\\", '"': '\\"', "\n": "\\n", "\t": "\\t", "\v": "\\v", "\b": "\\b",
-                  "\r": "\\r", "\f": "\\f", "\a": "\\a"}
+# Table C.4 backwards; a single quote needs no escape between double quotes.
+_NAMED_ESCAPES = {char: sequence for sequence, char in tables.ESCAPE_SEQUENCES.items() if char != "'"}
 
 
 def needs_unicode(text: str) -> bool:

@@ -19,6 +19,7 @@ from pathlib import Path
 from lark import Lark, Token, Transformer
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
+from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lexicon import grammar_text, lexicon
 from edsconv.eds.reader_rules import (
@@ -60,7 +61,6 @@ MAX_SYNTAX_ERRORS = 100
 MAX_BRACE_DEPTH = 64
 
 _COMMENT = re.compile(r"\$[^\n]*")
-_SECTION_NAME = re.compile(r"[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
 _WHITESPACE_AND_COMMENTS = re.compile(r"(?:[ \t\n\f\v\x1a]|\$[^\n]*)*")
 _CANOPEN_SECTION = re.compile(r"^[ \t]*\[(?:FileInfo|DeviceInfo|MandatoryObjects|[0-9A-Fa-f]{4})\][ \t]*$",
                               re.MULTILINE | re.IGNORECASE)
@@ -145,7 +145,7 @@ class _Builder(Transformer):
         start = self.base + token.start_pos
         name = token.value[1:-1]
         section = Section(name=name.strip(), offset=start, source=self.lines)
-        if not _SECTION_NAME.fullmatch(name):
+        if not tables.SECTION_KEYWORD_RE.fullmatch(name):
             self.report(SECTION_NAME, f"section name [{name}] uses characters or spacing outside the keyword "
                         "rules of ISO 15745-4 (letters, digits, '_', single inner spaces)", start)
         first = self.seen_sections.get(section.name)

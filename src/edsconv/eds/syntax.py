@@ -19,6 +19,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
+from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lexicon import scalar_kind
 from edsconv.eds.source import LineIndex
@@ -92,8 +93,10 @@ class Scalar:
         return _KINDS[kind]
 
 
-_ESCAPES = {"\\": "\\", "n": "\n", "t": "\t", "v": "\v", "b": "\b", "r": "\r", "f": "\f", "a": "\a", '"': '"', "'": "'"}
-_ESCAPE_SEQUENCE = re.compile(r"\\(x[0-9A-Fa-f]{2}|u[0-9A-Fa-f]{4}|.)")
+# Table C.4: the letter after the backslash -> the character; \x and \u take hex digits.
+_ESCAPES = {sequence[1:]: char for sequence, char in tables.ESCAPE_SEQUENCES.items()}
+_ESCAPE_SEQUENCE = re.compile("\\\\(" + "".join(f"{sequence[1:]}[0-9A-Fa-f]{{{digits}}}|"
+                                              for sequence, digits in tables.NUMERIC_ESCAPES.items()) + ".)")
 
 
 def _unescape(match: re.Match[str]) -> str:

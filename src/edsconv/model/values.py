@@ -12,6 +12,7 @@ from __future__ import annotations
 import datetime
 import re
 import struct
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
@@ -315,10 +316,14 @@ def to_time(value: Value) -> datetime.time:
     match = _TIME.fullmatch(raw)
     if not match:
         raise ValueProblem(BAD_TIME, f"{raw!r} is not written hh:mm:ss")
-    try:
-        return datetime.time(int(match["hour"]), int(match["minute"]), int(match["second"]))
-    except ValueError:
-        raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)") from None
+    parts = {name: int(match[name]) for name in tables.EDS_TIME_OF_DAY_LIMITS}
+    if not _within(tables.EDS_TIME_OF_DAY_LIMITS, parts):
+        raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)")
+    return datetime.time(**parts)
+
+
+def _within(limits: Mapping[str, tuple[int, int]], values: Mapping[str, int]) -> bool:
+    return all(low <= values[name] <= high for name, (low, high) in limits.items())
 
 
 def to_revision(value: Value) -> Revision:
@@ -333,7 +338,9 @@ def to_revision(value: Value) -> Revision:
     revision = Revision(int(match["major"]), int(match["minor"]))
     if revision == Revision(0, 0):
         raise ValueProblem(BAD_REVISION, "revision 0.0 is invalid")
-    if len(match["major"]) > 1 or len(match["minor"]) > 1:
+    # one digit each: within the limits and without leading zeros
+    if not _within(tables.EDS_REVISION_LIMITS, {"major": revision.major, "minor": revision.minor}) \
+            or len(match["major"]) > 1 or len(match["minor"]) > 1:
         raise ValueNote(REVISION_BEYOND_2003, f"revision {raw}: the 2003 text allows one digit per part "
                         f"(read as major {revision.major}, minor {revision.minor})", revision)
     return revision

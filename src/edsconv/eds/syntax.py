@@ -277,40 +277,6 @@ class EdsFile:
         return has_errors(self.diagnostics)
 
 
-@dataclass(frozen=True, slots=True)
-class StringIMember:
-    """One language of a STRINGI value (C.4.1.3.5)."""
-
-    language: str
-    type_code: str
-    charset: str
-    text: str
-
-
-def stringi_members(group: Group) -> list[StringIMember]:
-    """Split a STRINGI brace group ``{n, {"eng",0xD0,4,"..."}, ...}`` into its languages.
-
-    Raises ValueError when the group is not shaped like a STRINGI.
-    """
-    if not group.fields or not isinstance(group.fields[0].value, Scalar):
-        raise ValueError("a STRINGI starts with the number of languages")
-    members = []
-    for member_field in group.fields[1:]:
-        member = member_field.value
-        if not isinstance(member, Group) or len(member.fields) != 4:
-            raise ValueError("each STRINGI language is a group of four fields")
-        language, type_code, charset, content = (f.value for f in member.fields)
-        if not isinstance(language, String) or not isinstance(content, String):
-            raise ValueError("a STRINGI language code and its content are strings")
-        if not isinstance(type_code, Scalar) or not isinstance(charset, Scalar):
-            raise ValueError("a STRINGI data type and character set are numbers")
-        members.append(StringIMember(language.text, type_code.raw, charset.raw, content.text))
-    declared = group.fields[0].value.raw
-    if not declared.isdigit() or int(declared) != len(members):
-        raise ValueError(f"the STRINGI declares {declared} languages but lists {len(members)}")
-    return members
-
-
 def _comments_json(comments: list[Comment]) -> list[str]:
     return [comment.text for comment in comments]
 

@@ -428,21 +428,6 @@ def enum_descriptor_bits(ctx: Context) -> Iterator[Diagnostic]:
 # --- assemblies ------------------------------------------------------------------------
 
 
-def _member_bits(assembly: Assembly, member: AssemblyMember) -> int | None:
-    """A member's size in bits; an empty Member Size takes the referenced
-    Param's Data Size or Assem's Size (in bytes) times 8. None when unknown."""
-    if _is_int(member.size):
-        return member.size
-    if _written(assembly.entry, member.field_index):
-        return None  # written but not convertible: EDS1xx says why
-    target = member.reference.target if isinstance(member.reference, Reference) else None
-    if isinstance(target, Parameter) and _is_int(target.data_size):
-        return target.data_size * 8
-    if isinstance(target, Assembly) and _is_int(target.size):
-        return target.size * 8
-    return None
-
-
 @check(EMPTY_MEMBER, ASSEMBLY_SIZE_MISMATCH, ASSEMBLY_NOT_WHOLE_BYTES, MODULE_IN_MEMBER)
 def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
     for assembly in ctx.device.assemblies.values():
@@ -459,7 +444,7 @@ def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
             if member.reference == MODULE:
                 yield ctx.at(MODULE_IN_MEMBER, f"{assembly.keyword}: 'Module' is not allowed as a Member Reference; "
                              "use ModuleMemberList in place of the pair", _node(entry, reference_index))
-            bits = _member_bits(assembly, member)
+            bits = ctx.device.member_bits(assembly, member)
             total = total + bits if total is not None and bits is not None else None
         if total is None or assembly.module_member_list or not assembly.members:
             continue

@@ -16,7 +16,7 @@ import datetime
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, TypeGuard
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
@@ -446,3 +446,55 @@ class Device:
         if found is None:
             found = next((e for entries in self.extra_entries.values() for e in entries if e.keyword == keyword), None)
         return found
+
+    # --- sizes of assembly members (C.4.1.4.8) ---------------------------------------------
+    def member_bits(self, assembly: Assembly, member: AssemblyMember) -> int | None:
+        """A member's size in bits: its Member Size; when that is empty, the defined size of
+        what it references (C.4.1.4.8): a Param's Data Size (field 6) or an Assem's size
+        (:meth:`assembly_bits`), in bytes times 8. None when unknown: a Member Size written
+        but not readable, a parameter without a Data Size, any other reference, a cycle."""
+        return self._member_bits(assembly, member, frozenset({assembly.keyword}))
+
+    def assembly_bits(self, assembly: Assembly) -> int | None:
+        """The size of an assembly's data block in bits. C.4.1.4.8: its Size and its members
+        both specify it (and shall agree); the Size when given, else what the members add
+        up to, 0 with neither. None when unknown (members from the module, a size or member
+        that cannot be read, a ProxyAssem / ProxiedAssem that states neither)."""
+        return self._assembly_bits(assembly, frozenset({assembly.keyword}))
+
+    def _member_bits(self, assembly: Assembly, member: AssemblyMember, seen: frozenset[str]) -> int | None:
+        if _is_int(member.size):
+            return member.size
+        if _written(assembly.entry, member.field_index) or not isinstance(member.reference, Reference):
+            return None
+        reference = member.reference
+        target = reference.target if reference.target is not None else self.resolve(reference.keyword)
+        if isinstance(target, Parameter):
+            return 8 * target.data_size if _is_int(target.data_size) else None
+        if isinstance(target, Assembly) and target.keyword not in seen:
+            return self._assembly_bits(target, seen | {target.keyword})
+        return None
+
+    def _assembly_bits(self, assembly: Assembly, seen: frozenset[str]) -> int | None:
+        if _is_int(assembly.size):
+            return 8 * assembly.size
+        if _written(assembly.entry, 2) or assembly.module_member_list:
+            return None
+        if not assembly.members and assembly.family != "Assem":
+            return None  # a Proxy/Proxied assembly stating neither is described with the module (C.4.1.5.3.2)
+        total = 0
+        for member in assembly.members:
+            bits = self._member_bits(assembly, member, seen)
+            if bits is None:
+                return None
+            total += bits
+        return total
+
+
+def _is_int(value: object) -> TypeGuard[int]:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _written(entry: Entry | None, index: int) -> bool:
+    """True when field ``index`` (0-based) of the entry holds a value, converted or not."""
+    return entry is not None and index < len(entry.fields) and entry.fields[index].value is not None

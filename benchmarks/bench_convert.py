@@ -23,7 +23,7 @@ from edsconv.eds.writer import write
 from edsconv.model import Device
 from edsconv.xml.commnet import read_commnet_profile
 from edsconv.xml.common import Header
-from edsconv.xml.device import read_device_profile
+from edsconv.xml.device_read import read_device_profile
 from common import best_of, corpus_files, options
 from generate import generate
 

@@ -12,7 +12,8 @@ from conftest import REPO, SHARED_REAL
 from edsconv.model import MODULE, Device, Reference
 from edsconv.model.values import PathItem, Revision
 from edsconv.xml.common import EDSCONV, Header, serialise
-from edsconv.xml.device import DEVICE_PROFILE_PARTS, device_profile, equal_parts, read_device_profile
+from edsconv.xml.device_read import DEVICE_PROFILE_PARTS, equal_parts, read_device_profile
+from edsconv.xml.device_write import device_profile
 from edsconv.xml.safe import parse_xml
 
 CORPUS = [REPO / "corpus" / "examples" / "io_adapter.eds", *sorted((REPO / "corpus" / "spec").glob("*.eds")),

@@ -62,7 +62,7 @@ class Output:
 def profile_documents(device: Device, header: Header, stem: str) -> list[Output]:
     """The device and communication network profiles, validated."""
     from edsconv.xml.commnet import commnet_profile
-    from edsconv.xml.device import device_profile
+    from edsconv.xml.device_write import device_profile
 
     return [Output(f"{stem}_device.xml", serialise(device_profile(device, header), "cip-device")),
             Output(f"{stem}_commnet.xml", serialise(commnet_profile(device, header), "ethernetip-commnet"))]
@@ -148,7 +148,7 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
     """Read, validate and convert XML profiles into one Device; a wrapper resolves to its EDS."""
     from edsconv import build, load
     from edsconv.xml.commnet import read_commnet_profile
-    from edsconv.xml.device import read_device_profile
+    from edsconv.xml.device_read import read_device_profile
     from edsconv.xml.validate import read_and_validate
 
     device = Device()

@@ -46,6 +46,7 @@ from edsconv.xml.common import (
     is_xml_text,
     xml_text,
 )
+from edsconv.xml.safe import XmlDocument
 
 #: Connection families in the order the schema's ConnectionDescriptions sequence wants them.
 FAMILIES = ("Connection", "ProxyConnect", "ProxiedConnect")
@@ -386,14 +387,14 @@ def commnet_profile(device: Device, header: Header) -> etree._Element:
 # --- reading -------------------------------------------------------------------------------
 
 class _Reader:
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: Device, document: XmlDocument) -> None:
         self.device = device
+        self.document = document
         self.diagnostics: list[Diagnostic] = []
 
     def report(self, problem: ValueProblem, element: etree._Element) -> None:
-        line = element.sourceline or 0
-        self.diagnostics.append(Diagnostic.of(problem.rule, f"{_describe(element)}: {problem.message}",
-                                              line, 1 if line else 0))
+        self.diagnostics.append(self.document.diagnostic(problem.rule, f"{_describe(element)}: {problem.message}",
+                                                         element))
 
     # values
     @staticmethod
@@ -546,12 +547,15 @@ def _describe(element: etree._Element) -> str:
     return f"{owner} {name}" if owner else name
 
 
-def read_commnet_profile(root: etree._Element, device: Device) -> list[Diagnostic]:
-    """Fill ``device.connections`` and ``device.ports`` from a network profile (the inverse of
-    :func:`commnet_profile`, extension elements included); the diagnostics name values
-    that could not be read. The required-minimum objects carry nothing the model keeps."""
-    reader = _Reader(device)
-    body = root.find("ProfileBody")
+def read_commnet_profile(source: XmlDocument | etree._ElementTree | etree._Element,
+                         device: Device) -> list[Diagnostic]:
+    """Fill ``device.connections`` and ``device.ports`` from a network profile (the document,
+    its root or tree; the inverse of :func:`commnet_profile`, extension elements included);
+    the diagnostics name values that could not be read, at their element. The
+    required-minimum objects carry nothing the model keeps."""
+    document = XmlDocument.of(source)
+    reader = _Reader(device, document)
+    body = document.tree.getroot().find("ProfileBody")
     if body is None:
         return reader.diagnostics
     descriptions = body.find("ApplicationLayers/ConnectionManager/ConnectionDescriptions")

@@ -158,14 +158,13 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
         diagnostics.extend(report.diagnostics)
         if document is None or has_errors(report.diagnostics):
             return None, diagnostics
-        root = document.tree.getroot()
         kind = report.kind.name if report.kind else ""
         if kind == "cip-device":
-            diagnostics.extend(read_device_profile(root, device))
+            diagnostics.extend(read_device_profile(document, device))
         elif kind == "ethernetip-commnet":
-            diagnostics.extend(read_commnet_profile(root, device))
+            diagnostics.extend(read_commnet_profile(document, device))
         elif kind in ("eds-device-wrapper", "eds-commnet-wrapper"):
-            found, described = find_wrapped_eds(path, root)
+            found, described = find_wrapped_eds(path, document.tree.getroot())
             if found is None:
                 diagnostics.append(Diagnostic.of(WRAPPER_NOT_FOUND, f"the wrapper references an EDS ({described}); "
                                                  f"no such EDS is next to it in {path.parent}", 1, 1, str(path)))

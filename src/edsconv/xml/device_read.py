@@ -17,7 +17,7 @@ import re
 from lxml import etree
 
 from edsconv import spec_tables as tables
-from edsconv.diagnostics import Diagnostic, Severity, rule
+from edsconv.diagnostics import Diagnostic, Rule, Severity, rule
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -43,6 +43,7 @@ from edsconv.model.build import iter_references
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.codec import decode, read_comment, read_entries, reference, set_path
 from edsconv.xml.common import EDSCONV
+from edsconv.xml.safe import XmlDocument
 
 BAD_DEVICE_VALUE = rule(
     "XML201", Severity.WARNING, "C.2.1.2",
@@ -91,20 +92,28 @@ VALUE_TAGS = (("MinimumValue", "minimum"), ("MaximumValue", "maximum"), ("Defaul
 
 
 
-def read_device_profile(root, device: Device) -> list[Diagnostic]:
-    """Fill the device-profile parts of ``device`` from a device profile (the
-    ISO15745Profile element or its tree), edsconv extensions included.
+def read_device_profile(source: XmlDocument | etree._ElementTree | etree._Element,
+                        device: Device) -> list[Diagnostic]:
+    """Fill the device-profile parts of ``device`` from a device profile (the document,
+    the ISO15745Profile element or its tree), edsconv extensions included.
 
     Values the reader cannot convert leave their model field empty (None) with a
-    diagnostic; the network profile parts of ``device`` are left alone.
+    diagnostic at the element (and the document's file); the network profile parts
+    of ``device`` are left alone.
     """
-    if isinstance(root, etree._ElementTree):
-        root = root.getroot()
-    diagnostics: list[Diagnostic] = []
-    body = root.find("ProfileBody")
+    document = XmlDocument.of(source)
+    reader = _Reader(document)
+    body = document.tree.getroot().find("ProfileBody")
     if body is None:
-        return diagnostics
-    read_schema_part(body, device, diagnostics)
+        return reader.diagnostics
+    read_schema_part(body, device, reader)
+    _read_extensions(reader, body, device)
+    for ref in iter_references(device):
+        ref.target = device.resolve(ref.keyword)
+    return reader.diagnostics
+
+
+def _read_extensions(reader: _Reader, body: etree._Element, device: Device) -> None:
     extra: dict[str, list[GenericEntry]] = {}
     sections: list[GenericSection] = []
     comments: list[CommentNote] = []
@@ -121,32 +130,31 @@ def read_device_profile(root, device: Device) -> list[Diagnostic]:
                 elif element.tag == EDSCONV + "Values":
                     values.extend(v for v in element if v.tag == EDSCONV + "Value")
             except (ValueError, TypeError, KeyError) as error:
-                _report(diagnostics, BAD_EXTENSION, element, f"{etree.QName(element).localname}: {error}")
+                reader.report(BAD_EXTENSION, element, f"{etree.QName(element).localname}: {error}")
     for element in values:
         try:
             set_path(device, element.get("path", "").split("."), decode(element))
         except (ValueError, TypeError, KeyError, IndexError, AttributeError) as error:
-            _report(diagnostics, BAD_EXTENSION, element, f"Value {element.get('path')!r}: {error}")
+            reader.report(BAD_EXTENSION, element, f"Value {element.get('path')!r}: {error}")
     device.extra_entries = extra
     device.other_sections = sections
     device.comments = comments
-    for ref in iter_references(device):
-        ref.target = device.resolve(ref.keyword)
-    return diagnostics
-
-
-def _report(diagnostics: list[Diagnostic], rule_, element, message: str) -> None:
-    diagnostics.append(Diagnostic.of(rule_, message, element.sourceline or 0, 0))
 
 
 class _Reader:
     """Decodes the schema elements; a value it cannot convert is None plus a diagnostic."""
 
-    def __init__(self, diagnostics: list[Diagnostic]) -> None:
-        self.diagnostics = diagnostics
+    def __init__(self, document: XmlDocument | None) -> None:
+        #: where the elements come from (None: a tree the writer reads back, positions unused)
+        self.document = document
+        self.diagnostics: list[Diagnostic] = []
+
+    def report(self, rule_: Rule, element: etree._Element, message: str) -> None:
+        document = self.document or XmlDocument.of(element)
+        self.diagnostics.append(document.diagnostic(rule_, message, element))
 
     def bad(self, element, what: str, text: str) -> None:
-        _report(self.diagnostics, BAD_DEVICE_VALUE, element, f"{what}: cannot read {text!r}")
+        self.report(BAD_DEVICE_VALUE, element, f"{what}: cannot read {text!r}")
 
     def convert(self, element, converter, what: str | None = None):
         """``converter(text)`` of ``element`` (None when absent or unreadable)."""
@@ -224,8 +232,10 @@ def _id_number(element, prefix: str) -> int | None:
     return int(match.group(1)) if match else None
 
 
-def read_schema_part(body, device: Device, diagnostics: list[Diagnostic]) -> None:
-    reader = _Reader(diagnostics)
+def read_schema_part(body: etree._Element, device: Device, reader: _Reader | None = None) -> None:
+    """The schema elements of a ProfileBody into ``device`` (a reader without a document:
+    the writer reading back what it wrote)."""
+    reader = reader or _Reader(None)
     device.file = _read_file(reader, body)
     attributes = body.find("DeviceIdentity/DeviceIdentity_InstanceAttributes")
     device.identity, device.classifications = _read_identity(reader, attributes)

@@ -76,7 +76,7 @@ def device_profile(device: Device, header: Header, *, commnet_handle: bool = Fal
         etree.SubElement(handle, "ProfileRevision").text = header.revision
     _write_extensions(function, device)
     decoded = Device()
-    read_schema_part(body, decoded, [])
+    read_schema_part(body, decoded)
     patches = [path for part in DEVICE_PROFILE_PARTS
                for path in differences(getattr(device, part), getattr(decoded, part), [part])]
     if patches:

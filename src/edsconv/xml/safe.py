@@ -16,6 +16,8 @@ from pathlib import Path
 
 from lxml import etree
 
+from edsconv.diagnostics import Diagnostic, Rule
+
 #: Larger inputs are refused before parsing. The biggest real profiles are a few MiB.
 MAX_XML_BYTES = 64 * 1024 * 1024
 
@@ -64,6 +66,20 @@ class XmlDocument:
     tree: etree._ElementTree
     #: The decoded source lines, for the positions libxml2 does not record.
     lines: list[str]
+    #: The file it was read from (None for bytes or a tree built in memory).
+    path: str | None = None
+
+    @classmethod
+    def of(cls, source: XmlDocument | etree._ElementTree | etree._Element) -> XmlDocument:
+        """``source`` as a document; a tree or element without its text gives the lines libxml2
+        records and column 1."""
+        if isinstance(source, XmlDocument):
+            return source
+        return cls(source if isinstance(source, etree._ElementTree) else source.getroottree(), [])
+
+    def diagnostic(self, rule: Rule, message: str, element: etree._Element) -> Diagnostic:
+        """A diagnostic of ``rule`` at ``element``'s start tag in this document's file."""
+        return Diagnostic.of(rule, message, *self.position(element), self.path)
 
     def position(self, element: etree._Element) -> tuple[int, int]:
         """Line and column of ``element``'s start tag.
@@ -87,13 +103,15 @@ def read_xml(path: str | Path, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
     """Read and parse the file at ``path``; ``OSError`` propagates for missing files."""
     with open(path, "rb") as stream:
         data = stream.read(max_bytes + 1)
-    return parse_xml(data, max_bytes)
+    return parse_xml(data, max_bytes, str(path))
 
 
-def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
-    """Parse ``data`` safely, raising an :class:`XmlError` subclass for anything unusable."""
+def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES, path: str | None = None) -> XmlDocument:
+    """Parse ``data`` (read from ``path``, if any) safely, raising an :class:`XmlError` subclass
+    for anything unusable."""
     if len(data) > max_bytes:
-        raise XmlTooLargeError(f"input larger than {max_bytes} bytes refused")
+        # not read, so no position within it: the file as a whole, from its start
+        raise XmlTooLargeError(f"input larger than {max_bytes} bytes refused", 1, 1)
     _refuse_entity_declarations(data)
     parser = etree.XMLParser(**_PARSER_OPTIONS)
     try:
@@ -108,7 +126,7 @@ def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
     if dtd is not None and any(True for _ in dtd.iterentities()):
         # Reached only by encodings the byte scan does not cover.
         raise UnsafeXmlError(_ENTITY_MESSAGE, 1, 1)
-    return XmlDocument(tree, data.decode(tree.docinfo.encoding or "utf-8", errors="replace").splitlines())
+    return XmlDocument(tree, data.decode(tree.docinfo.encoding or "utf-8", errors="replace").splitlines(), path)
 
 
 def _refuse_entity_declarations(data: bytes) -> None:

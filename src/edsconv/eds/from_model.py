@@ -23,6 +23,7 @@ from edsconv.model import (
     MODULE_MEMBER_LIST,
     SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
+    CommentNote,
     Connection,
     Device,
     GenericEntry,
@@ -373,28 +374,24 @@ def device_to_eds(device: Device) -> EdsFile:
     return eds
 
 
-def attach_comments(eds: EdsFile, notes) -> None:
+def attach_comments(eds: EdsFile, notes: Iterable[CommentNote]) -> None:
     """Put each CommentNote back on its section / entry / field. A note whose field is
     gone goes to the entry's last field; one whose entry is gone to its section's
     leading comments; one whose section is gone to the end of the file."""
     sections: dict[str, Section] = {}
-    for section in eds.sections:
-        sections.setdefault(section.name, section)
     entries: dict[tuple[str, str], Entry] = {}
-    for section in eds.sections:
-        for entry in section.entries:
-            entries.setdefault((section.name, entry.keyword), entry)
+    for each_section in eds.sections:
+        sections.setdefault(each_section.name, each_section)
+        for each_entry in each_section.entries:
+            entries.setdefault((each_section.name, each_entry.keyword), each_entry)
     for note in notes:
         comment = Comment(note.text)
         section = sections.get(note.section)
         if section is None:
             eds.trailing_comments.append(comment)
-            continue
-        if note.keyword is None:
+        elif note.keyword is None:
             (section.leading_comments if note.leading else section.comments).append(comment)
-            continue
-        entry = entries.get((note.section, note.keyword))
-        if entry is None:
+        elif (entry := entries.get((note.section, note.keyword))) is None:
             section.leading_comments.append(comment)
         elif note.leading:
             entry.leading_comments.append(comment)

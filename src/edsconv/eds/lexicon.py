@@ -97,4 +97,4 @@ def scalar_kind(raw: str) -> str:
     Cached: the same spellings ("0", "0x0000", "Param1") recur all over a file.
     """
     match = lexicon().scalar_kind.fullmatch(raw)
-    return match.lastgroup if match else ""
+    return (match.lastgroup or "") if match else ""

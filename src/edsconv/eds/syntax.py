@@ -34,6 +34,9 @@ class Located:
     """
 
     __slots__ = ()
+    # declared by each node class (annotations only: this mixin is not a dataclass)
+    offset: int
+    source: LineIndex | None
 
     @property
     def line(self) -> int:
@@ -75,7 +78,7 @@ class Comment(Located):
     @property
     def own_line(self) -> bool:
         """True when nothing but white space precedes it on its line."""
-        return bool(self.source) and self.source.starts_line(self.offset)
+        return self.source is not None and self.source.starts_line(self.offset)
 
 
 @dataclass(slots=True)

@@ -41,7 +41,8 @@ class Presence(enum.Enum):
         return self.value
 
 
-R, O, C, X = Presence.REQUIRED, Presence.OPTIONAL, Presence.CONDITIONAL, Presence.RESERVED
+# the spec tables' own column letters
+R, O, C, X = Presence.REQUIRED, Presence.OPTIONAL, Presence.CONDITIONAL, Presence.RESERVED  # noqa: E741 - see above
 
 # ---------------------------------------------------------------------------
 # Data types: CIP elementary types (C.4.1.3.3 - C.4.1.3.10) and EDS-only types
@@ -261,7 +262,8 @@ _LENGTH = MinMaxRule(R, "length", "minimum / maximum string length; Data Size gi
 # restored: the seed's Table C.17 merges the BYTE..LWORD rows into one "Not
 # allowed" cell, and prints EPATH as "EPAUTH" ("Enumerated Path").
 MIN_MAX_RULES: Mapping[str, MinMaxRule] = MappingProxyType({
-    **{n: MinMaxRule(Presence.NOT_ALLOWED, None, "bit strings have no min/max") for n in ("BYTE", "WORD", "DWORD", "LWORD")},
+    **{n: MinMaxRule(Presence.NOT_ALLOWED, None, "bit strings have no min/max")
+       for n in ("BYTE", "WORD", "DWORD", "LWORD")},
     **{n: _LENGTH for n in ("STRING", "STRING2", "STRINGN", "SHORT_STRING")},
     "EPATH": MinMaxRule(O, "length", "minimum / maximum path length"),
 })
@@ -475,7 +477,8 @@ _TRANSPORTS = ("listen-only", "input-only", "exclusive-owner", "redundant-owner"
 TRIGGER_TRANSPORT_BITS = BitTable("Trigger and transport mask", "C.23", _C23, 32, (
     *(_flag(i, f"class {i}", _C23, "not supported", f"class {i}: {d}", "class") for i, d in enumerate(_CLASSES)),
     _reserved(7, 15, _C23, "class"),
-    *(_flag(16 + i, f"trigger {d}", _C23, "not supported", f"trigger: {d}", "trigger") for i, d in enumerate(_TRIGGERS)),
+    *(_flag(16 + i, f"trigger {d}", _C23, "not supported", f"trigger: {d}", "trigger")
+      for i, d in enumerate(_TRIGGERS)),
     _reserved(19, 23, _C23, "trigger"),
     *(_flag(24 + i, d, _C23, "not set", f"transport type: {d}", "transport") for i, d in enumerate(_TRANSPORTS)),
     _reserved(28, 30, _C23),
@@ -742,15 +745,20 @@ def _single(section, keyword, name, eds_type, presence, clause, table, descripti
 def _singles(section: str, clause: str, table: str, rows) -> tuple[EntrySpec, ...]:
     """Single-field entries of a section; each row is ((keyword, name,
     eds_type, presence), description[, keywords for _single])."""
-    return tuple(_single(section, *row[0], clause, table, row[1], **(row[2] if len(row) > 2 else {}))
-                 for row in rows)
+    entries = []
+    for row in rows:
+        keyword, name, eds_type, presence = row[0]
+        entries.append(_single(section, keyword, name, eds_type, presence, clause, table, row[1],
+                               **(row[2] if len(row) > 2 else {})))
+    return tuple(entries)
 
 
 # --- [File] (Tables C.6, C.7) ----------------------------------------------
 
 _FILE = "C.4.1.4.2"
 FILE_ENTRIES = _singles("File", _FILE, "C.6", (
-    (("DescText", "File Description Text", "EDS_Char_Array", R), "A single line of text displayed by the configuration tool"),
+    (("DescText", "File Description Text", "EDS_Char_Array", R),
+     "A single line of text displayed by the configuration tool"),
     (("CreateDate", "File Creation Date", "EDS_Date", R), "Creation date of the EDS; not for version control"),
     (("CreateTime", "File Creation Time", "EDS_Time_Of_Day", R), "Creation time of the EDS; not for version control"),
     (("ModDate", "Last Modification Date", "EDS_Date", C),
@@ -1090,6 +1098,11 @@ def split_numbered(keyword: str) -> tuple[str, int | None]:
     """``"Param12"`` -> ``("Param", 12)``; un-numbered keywords -> ``(keyword, None)``."""
     m = _NUMBERED.fullmatch(keyword)
     return (m.group(1), int(m.group(2))) if m else (keyword, None)
+
+
+def instance_number(keyword: str) -> int:
+    """The N of a numbered keyword (``"Param12"`` -> 12); 0 for a keyword without one."""
+    return split_numbered(keyword)[1] or 0
 
 
 def entry_spec(section: str, keyword: str) -> EntrySpec | None:

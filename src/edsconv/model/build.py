@@ -62,8 +62,17 @@ UNKNOWN_DATA_TYPE = rule(
 )
 
 _REFERENCE_KINDS = ("ParamRef", "ProxyParamRef", "AssemRef", "ProxyAssemRef")
-_REFERENCE = {kind: re.compile(tables.FIELD_VALUE_KINDS[kind]) for kind in _REFERENCE_KINDS}
-_MEMBER_KEYWORD = re.compile(tables.FIELD_VALUE_KINDS["MemberKeyword"])
+
+
+def _kind_pattern(kind: str) -> re.Pattern[str]:
+    pattern = tables.FIELD_VALUE_KINDS[kind]
+    if pattern is None:
+        raise KeyError(f"{kind} has no lexical form")
+    return re.compile(pattern)
+
+
+_REFERENCE = {kind: _kind_pattern(kind) for kind in _REFERENCE_KINDS}
+_MEMBER_KEYWORD = _kind_pattern("MemberKeyword")
 
 
 @dataclass(frozen=True, slots=True)
@@ -229,14 +238,14 @@ class _Builder:
 
     def classification(self, entry: Entry, spec: tables.EntrySpec) -> None:
         values = [plain(f.value) for f in entry.fields]
-        number = tables.split_numbered(entry.keyword)[1]
+        number = tables.instance_number(entry.keyword)
         self.device.classifications.append(Classification(
             number, self.value(entry, 0, "Keyword"), tuple(v for v in values[1:] if v is not None), entry))
 
     # --- [Params] ----------------------------------------------------------------------
     def params_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
         if spec.keyword in tables.ENUM_FAMILIES.values():
-            self.enums.append((spec.pairs_with, entry))
+            self.enums.append((spec.pairs_with or "", entry))
         elif spec.keyword == "ProxyParamSizeAdder":
             self.size_adders.append(entry)
         elif entry.keyword not in self.device.parameters:
@@ -246,7 +255,7 @@ class _Builder:
         proxy = spec.keyword == "ProxyParam"
         v = self.fields(entry, spec, proxy=proxy)
         v += [None] * (len(tables.PARAM_FIELDS) - len(v))
-        parameter = Parameter(entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1], entry=entry)
+        parameter = Parameter(entry.keyword, spec.keyword, tables.instance_number(entry.keyword), entry=entry)
         parameter.link_path_size, parameter.link_path, parameter.descriptor = v[1], v[2], v[3]
         parameter.data_type_code, parameter.data_size = v[4], v[5]
         parameter.name, parameter.units, parameter.help = v[6], v[7], v[8]
@@ -284,7 +293,7 @@ class _Builder:
     def attach_enums_and_adders(self) -> None:
         parameters = self.device.parameters
         for family, entry in self.enums:
-            number = tables.split_numbered(entry.keyword)[1]
+            number = tables.instance_number(entry.keyword)
             parameter = parameters.get(f"{family}{number}")
             type_name = parameter.enum_key_type if parameter is not None else "LINT"
             enum: dict[int, str] = {}
@@ -296,7 +305,7 @@ class _Builder:
             if parameter is not None and parameter.enum is None:
                 parameter.enum = enum
         for entry in self.size_adders:
-            parameter = parameters.get(f"ProxyParam{tables.split_numbered(entry.keyword)[1]}")
+            parameter = parameters.get(f"ProxyParam{tables.instance_number(entry.keyword)}")
             if parameter is not None:
                 parameter.size_adder = tuple(self.param_value(entry, i, parameter, a, False)
                                              for i, a in enumerate(("minimum", "maximum", "default")))
@@ -309,7 +318,7 @@ class _Builder:
             if number is not None:
                 members.append(Reference(f"Param{number}", "Param", number, entry=entry, field_index=index))
         self.device.groups.append(ParameterGroup(
-            tables.split_numbered(entry.keyword)[1], self.value(entry, 0, "EDS_Char_Array"),
+            tables.instance_number(entry.keyword), self.value(entry, 0, "EDS_Char_Array"),
             self.value(entry, 1, "UINT"), members, entry))
 
     # --- [Assembly] ----------------------------------------------------------------------
@@ -321,7 +330,7 @@ class _Builder:
 
     def assembly(self, entry: Entry, spec: tables.EntrySpec) -> Assembly:
         proxy = spec.keyword == "ProxyAssem"
-        assembly = Assembly(entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1], entry=entry)
+        assembly = Assembly(entry.keyword, spec.keyword, tables.instance_number(entry.keyword), entry=entry)
         assembly.name = self.value(entry, 0, "EDS_Char_Array", proxy=proxy)
         assembly.path = self.value(entry, 1, "EPATH", proxy=proxy)
         assembly.size = self.value(entry, 2, "UINT", proxy=proxy)
@@ -351,7 +360,7 @@ class _Builder:
         v = self.fields(entry, spec, proxy=spec.keyword == "ProxyConnect")
         v += [None] * (len(tables.CONNECTION_FIELDS) - len(v))
         self.device.connections[entry.keyword] = Connection(
-            entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1],
+            entry.keyword, spec.keyword, tables.instance_number(entry.keyword),
             trigger_transport=v[0], parameters=v[1],
             o_to_t=ConnectionEndpoint(*v[2:5]), t_to_o=ConnectionEndpoint(*v[5:8]),
             config1=ConnectionEndpoint(None, *v[8:10]), config2=ConnectionEndpoint(None, *v[10:12]),
@@ -361,7 +370,7 @@ class _Builder:
     def port(self, entry: Entry, spec: tables.EntrySpec) -> None:
         v = self.fields(entry, spec)
         v += [None] * (4 - len(v))
-        self.device.ports.append(Port(tables.split_numbered(entry.keyword)[1], v[0], v[1], v[2], v[3],
+        self.device.ports.append(Port(tables.instance_number(entry.keyword), v[0], v[1], v[2], v[3],
                                       tuple(v[6:]), entry))
 
     # --- [Modular] -----------------------------------------------------------------------
@@ -371,7 +380,7 @@ class _Builder:
         if keyword == "Rack":
             v = self.fields(entry, spec)
             v += [None] * (8 - len(v))
-            modular.racks.append(Rack(tables.split_numbered(entry.keyword)[1], *v[:5],
+            modular.racks.append(Rack(tables.instance_number(entry.keyword), v[0], v[1], v[2], v[3], v[4],
                                       tuple(s for s in v[8:] if s is not None), entry))
         elif keyword == "Query":
             v = self.fields(entry, spec)

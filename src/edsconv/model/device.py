@@ -443,9 +443,9 @@ class Device:
         """The entry a reference keyword names, in any section (newer-spec entries
         such as AssemExaN resolve to their generic entry)."""
         found = self.parameters.get(keyword) or self.assemblies.get(keyword) or self.connections.get(keyword)
-        if found is None:
-            found = next((e for entries in self.extra_entries.values() for e in entries if e.keyword == keyword), None)
-        return found
+        if found is not None:
+            return found
+        return next((e for entries in self.extra_entries.values() for e in entries if e.keyword == keyword), None)
 
     # --- sizes of assembly members (C.4.1.4.8) ---------------------------------------------
     def member_bits(self, assembly: Assembly, member: AssemblyMember) -> int | None:

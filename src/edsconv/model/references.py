@@ -76,9 +76,9 @@ def occurrences(eds: EdsFile, device: Device, lines: Sequence[str]) -> list[Occu
     found = [_keyword_span(entry, keyword, "definition") for keyword, entry in definitions(device).items()]
     found += _paired_entries(eds)
     section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
-    found += [_reference_span(reference, section_of.get(id(reference.entry), ""))
+    found += [_reference_span(reference, entry, section_of.get(id(entry), ""))
               for reference in iter_references(device)
-              if reference.entry is not None and reference.field_index < len(reference.entry.fields)]
+              if (entry := reference.entry) is not None and reference.field_index < len(entry.fields)]
     found += _path_references(eds, lines)
     return found
 
@@ -112,8 +112,7 @@ _KIND_BY_SECTION = {"Groups": "group member", "Assembly": "assembly member", "Co
                     "Modular": "slot display rule"}
 
 
-def _reference_span(reference: Reference, section: str) -> Occurrence:
-    entry = reference.entry
+def _reference_span(reference: Reference, entry: Entry, section: str) -> Occurrence:
     item = entry.fields[reference.field_index]
     raw = item.raw or ""
     by_number = not raw.startswith(reference.family)
@@ -127,14 +126,16 @@ def _path_references(eds: EdsFile, lines: Sequence[str]) -> Iterator[Occurrence]
     """``[ParamN]`` and ``ParamN`` inside the path strings of every entry whose field is an EPATH."""
     for section in eds.sections:
         for entry in section.entries:
-            strings = [(i, item) for i, item in enumerate(entry.fields)
+            strings = [(i, item, item.value) for i, item in enumerate(entry.fields)
                        if isinstance(item.value, String) and "Param" in item.value.raw]
             spec = tables.entry_spec(section.name, entry.keyword) if strings else None
-            for index, item in strings if spec is not None else ():
+            if spec is None:
+                continue
+            for index, item, value in strings:
                 field_spec = spec.field_at(index + 1)
-                if field_spec is None or "EPATH" not in field_spec.alternatives:
+                if field_spec is None or "EPATH" not in field_spec.alternatives or not isinstance(value, String):
                     continue
-                for line, column, part in _string_parts(item.value, item.line, item.column, lines):
+                for line, column, part in _string_parts(value, item.line, item.column, lines):
                     for match in _PATH_REFERENCE.finditer(part):
                         family = tables.split_numbered(match.group())[0]
                         yield Occurrence(match.group(), line, column + match.start(),

@@ -237,6 +237,8 @@ def to_real(value: Value, type_name: str) -> float:
     """REAL / LREAL: integer, decimal or scientific notation, or a reserved word (C.4.1.3.10)."""
     data_type = tables.DATA_TYPES_BY_NAME[type_name]
     limits = data_type.floats
+    if limits is None:
+        raise KeyError(f"{type_name} is not a floating point type")
     raw = _scalar(value, f"a floating point value ({type_name})")
     kind = value.kind
     if kind is ValueKind.REAL_WORD:
@@ -259,10 +261,10 @@ def to_real(value: Value, type_name: str) -> float:
         decimal = _DECIMAL.fullmatch(raw)
         if decimal and len(decimal["whole"]) + len(decimal["fraction"]) > limits.decimal_digits:
             raise ValueProblem(REAL_NOTATION, f"{raw} has more than {limits.decimal_digits} digits ({type_name})")
-    number = float(raw)
-    if not data_type.in_range(number) and not _rounds_to_single(number, data_type):
+    real = float(raw)
+    if not data_type.in_range(real) and not _rounds_to_single(real, data_type):
         raise ValueProblem(OUT_OF_RANGE, f"{raw} is outside the {type_name} range")
-    return number
+    return real
 
 
 def _rounds_to_single(number: float, data_type: tables.DataType) -> bool:
@@ -319,7 +321,7 @@ def to_time(value: Value) -> datetime.time:
     parts = {name: int(match[name]) for name in tables.EDS_TIME_OF_DAY_LIMITS}
     if not _within(tables.EDS_TIME_OF_DAY_LIMITS, parts):
         raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)")
-    return datetime.time(**parts)
+    return datetime.time(parts["hour"], parts["minute"], parts["second"])
 
 
 def _within(limits: Mapping[str, tuple[int, int]], values: Mapping[str, int]) -> bool:
@@ -354,7 +356,7 @@ def to_text(value: Value) -> str:
 
 
 # https postdates the 2003 text and is what every vendor site uses now.
-_URL = re.compile(r"(?i)(?:%s|https)://" % "|".join(tables.EDS_URL_SCHEMES))
+_URL = re.compile(rf"(?i)(?:{'|'.join(tables.EDS_URL_SCHEMES)}|https)://")
 
 
 def to_url(value: Value) -> str:
@@ -389,7 +391,7 @@ def to_stringi(value: Value) -> tuple[StringIMember, ...]:
         member = member_field.value
         if not isinstance(member, Group) or len(member.fields) != 4 or any(f.value is None for f in member.fields):
             raise ValueProblem(BAD_STRINGI, "each STRINGI language is {\"lang\", type, charset, \"text\"}")
-        language, type_code, charset, text = (f.value for f in member.fields)
+        language, type_code, charset, text = (f.value or Scalar("") for f in member.fields)  # none is empty
         language_text = to_text(language)
         if len(language_text) != 3:
             raise ValueProblem(BAD_STRINGI, f"language code {language_text!r} is not three letters (ISO 639-2/T)")
@@ -464,9 +466,8 @@ def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]
 
 def epath_bytes(items: tuple[PathItem, ...]) -> bytes | None:
     """The bytes of a path made only of bytes; None when it holds substitutions."""
-    if any(item.byte is None for item in items):
-        return None
-    return bytes(item.byte for item in items)
+    data = [item.byte for item in items]
+    return None if None in data else bytes(b for b in data if b is not None)
 
 
 #: Converter of each type name a FieldSpec can give, for the value-only types.

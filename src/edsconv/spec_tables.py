@@ -1121,6 +1121,14 @@ def entry_spec(section: str, keyword: str) -> EntrySpec | None:
     return spec if spec is not None and spec.numbered else None
 
 
+def known_entry(section: str, keyword: str) -> EntrySpec:
+    """The spec of an entry the code names itself; KeyError when the tables lack it."""
+    spec = entry_spec(section, keyword)
+    if spec is None:
+        raise KeyError(f"[{section}] {keyword}")
+    return spec
+
+
 def find_entry(entries: tuple[EntrySpec, ...], keyword: str) -> EntrySpec | None:
     """The spec among ``entries`` that ``keyword`` names, by name or alias, or by
     numbered family (``"TSpec3"`` -> TSpec), as :func:`entry_spec` resolves."""

@@ -463,22 +463,22 @@ class Device:
         return self._assembly_bits(assembly, frozenset({assembly.keyword}))
 
     def _member_bits(self, assembly: Assembly, member: AssemblyMember, seen: frozenset[str]) -> int | None:
-        if _is_int(member.size):
+        if is_integer(member.size):
             return member.size
-        if _written(assembly.entry, member.field_index) or not isinstance(member.reference, Reference):
+        if field_written(assembly.entry, member.field_index) or not isinstance(member.reference, Reference):
             return None
         reference = member.reference
         target = reference.target if reference.target is not None else self.resolve(reference.keyword)
         if isinstance(target, Parameter):
-            return 8 * target.data_size if _is_int(target.data_size) else None
+            return 8 * target.data_size if is_integer(target.data_size) else None
         if isinstance(target, Assembly) and target.keyword not in seen:
             return self._assembly_bits(target, seen | {target.keyword})
         return None
 
     def _assembly_bits(self, assembly: Assembly, seen: frozenset[str]) -> int | None:
-        if _is_int(assembly.size):
+        if is_integer(assembly.size):
             return 8 * assembly.size
-        if _written(assembly.entry, 2) or assembly.module_member_list:
+        if field_written(assembly.entry, 2) or assembly.module_member_list:
             return None
         if not assembly.members and assembly.family != "Assem":
             return None  # a Proxy/Proxied assembly stating neither is described with the module (C.4.1.5.3.2)
@@ -491,10 +491,11 @@ class Device:
         return total
 
 
-def _is_int(value: object) -> TypeGuard[int]:
+def is_integer(value: object) -> TypeGuard[int]:
+    """An int that is not a bool (a model value read as a number, not a Yes/No)."""
     return isinstance(value, int) and not isinstance(value, bool)
 
 
-def _written(entry: Entry | None, index: int) -> bool:
+def field_written(entry: Entry | None, index: int) -> TypeGuard[Entry]:
     """True when field ``index`` (0-based) of the entry holds a value, converted or not."""
     return entry is not None and index < len(entry.fields) and entry.fields[index].value is not None

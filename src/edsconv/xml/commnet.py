@@ -142,7 +142,7 @@ def _schema_text(field: _Field, value: Any) -> str | None:
         return None
     if isinstance(value, Reference) and field.kind in ("rpi", "size", "format"):
         text = value.text
-        forms = (tables.XSD_PARAM_REFERENCE_RE,)
+        forms: tuple[re.Pattern[str], ...] = (tables.XSD_PARAM_REFERENCE_RE,)
         if field.kind == "format":
             forms += (tables.XSD_ASSEM_REFERENCE_RE,)
         return text if any(form.fullmatch(text) for form in forms) else None
@@ -189,10 +189,10 @@ def _field_content(field: _Field, value: Any, names: set[str], keyword: str) -> 
         if isinstance(value, tuple):
             return _path_text(value), []
         return empty, [_value_extension(field, value)]
-    text = _schema_text(field, value)
-    if text is None:
+    schema_text = _schema_text(field, value)
+    if schema_text is None:
         return empty, [_value_extension(field, value)]
-    return text, []
+    return schema_text, []
 
 
 def _connection_element(connection: Connection, tag: str, names: set[str]) -> etree._Element:
@@ -251,7 +251,7 @@ def _port_fits(port: Port, ids: set[str]) -> bool:
 
 
 def _port_element(port: Port, tag: str, **attributes: str) -> etree._Element:
-    element = etree.Element(tag, id=f"Port{port.number}", **attributes)
+    element = etree.Element(tag, {"id": f"Port{port.number}", **attributes})
     extensions = []
     if port.type_name is not None:
         etree.SubElement(element, "PortTypeName").text = xml_text(port.type_name)
@@ -290,7 +290,8 @@ def _ports(device: Device) -> list[etree._Element]:
 # fixed true), the services that make mandatory attributes readable, and
 # None/false for everything optional ("not declared", not "known absent").
 _GET, _SET, _NONE = "Get", "Set", "None"
-_REQUIRED_MINIMUM = {
+#: tag -> the attribute its children carry, then (child, value) pairs
+_REQUIRED_MINIMUM: dict[str, tuple[Any, ...]] = {
     "ConnectionManager_InstanceOperations": (
         "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
         ("Get_Attribute_List", "false"), ("Set_Attribute_List", "false"), ("Get_Attribute_Single", "false"),
@@ -386,6 +387,11 @@ def commnet_profile(device: Device, header: Header) -> etree._Element:
 
 # --- reading -------------------------------------------------------------------------------
 
+def _all_text(element: etree._Element) -> str:
+    """The text of an element and its descendants (lxml yields str; its stubs say str or bytes)."""
+    return "".join(str(part) for part in element.itertext())
+
+
 class _Reader:
     def __init__(self, device: Device, document: XmlDocument) -> None:
         self.device = device
@@ -413,7 +419,7 @@ class _Reader:
         return path_items(text)
 
     def field_value(self, field: _Field, element: etree._Element) -> Any:
-        text = "".join(element.itertext())
+        text = _all_text(element)
         if field.kind == "text":
             return text
         if field.kind == "path":
@@ -426,7 +432,7 @@ class _Reader:
         return self.number_or_reference(text)
 
     def extension_value(self, field: _Field | None, element: etree._Element) -> Any:
-        text = "".join(element.itertext())
+        text = _all_text(element)
         if element.get("escaped") == "true":
             text = _unescape(text)
         if field is None or field.kind == "text" or element.get("type") == "string":
@@ -446,9 +452,10 @@ class _Reader:
                     field = _FIELDS_BY_TAG[child.tag]
                     field.set(connection, self.field_value(field, child))
                 elif child.tag in (EDSCONV + "Module", EDSCONV + "Empty", EDSCONV + "Value"):
-                    field = _FIELDS_BY_TAG.get(child.get("field", ""))
-                    if field is None:
+                    named = _FIELDS_BY_TAG.get(child.get("field", ""))
+                    if named is None:
                         raise ValueProblem(WRONG_KIND, f"field {child.get('field')!r} is not a connection field")
+                    field = named
                     marker = etree.QName(child).localname
                     value = MODULE if marker == "Module" else None if marker == "Empty" else \
                         self.extension_value(field, child)
@@ -468,13 +475,12 @@ class _Reader:
                 continue
             keyword = child.get("id", "")
             match = _ANY_KEYWORD.fullmatch(keyword)
-            family = match[1] if match else ""
-            if family not in FAMILIES or (child.tag in FAMILIES and child.tag != family):
+            if match is None or match[1] not in FAMILIES or (child.tag in FAMILIES and child.tag != match[1]):
                 self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a {etree.QName(child).localname}N "
                                          "keyword"), child)
                 continue
             if keyword not in found:
-                found[keyword] = self.connection(child, family, keyword, int(match[2]))
+                found[keyword] = self.connection(child, match[1], keyword, int(match[2]))
         for keyword in [k for k in order if k in found] + [k for k in found if k not in order]:
             self.device.connections[keyword] = found[keyword]
 
@@ -535,8 +541,8 @@ class _Reader:
                 placed.append((int(position), port))
             else:
                 ports.append(port)
-        for position, port in sorted(placed, key=lambda item: item[0]):
-            ports.insert(position, port)
+        for index, port in sorted(placed, key=lambda item: item[0]):
+            ports.insert(index, port)
         self.device.ports.extend(ports)
 
 

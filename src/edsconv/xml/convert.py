@@ -78,7 +78,7 @@ def wrapper_handle(device: Device, reference: str) -> etree._Element:
         key = (identity.vendor_code, identity.product_type, identity.product_code)
         values = (" ".join("" if v is None else str(v) for v in key),
                   f"{identity.major_revision}.{identity.minor_revision}", identity.icon)
-    for tag, text in zip(("ProfileIdentification", "ProfileRevision", "ProfileLocation"), values):
+    for tag, text in zip(("ProfileIdentification", "ProfileRevision", "ProfileLocation"), values, strict=True):
         if text is not None:
             etree.SubElement(handle, tag).text = text
     return handle

@@ -117,7 +117,7 @@ def _read_extensions(reader: _Reader, body: etree._Element, device: Device) -> N
     extra: dict[str, list[GenericEntry]] = {}
     sections: list[GenericSection] = []
     comments: list[CommentNote] = []
-    values = []
+    values: list[etree._Element] = []
     for function in body.findall("DeviceFunction"):
         for element in function:
             try:
@@ -252,12 +252,12 @@ def read_schema_part(body: etree._Element, device: Device, reader: _Reader | Non
                                         reader.child(class_attributes, "ConfigurationAssemblyInstance", _integer))
     for element in process.findall("Parameter/*"):
         if element.tag in PARAM_TAGS:
-            item = _read_parameter(reader, element)
-            device.parameters.setdefault(item.keyword, item)
+            parameter = _read_parameter(reader, element)
+            device.parameters.setdefault(parameter.keyword, parameter)
     for element in process.findall("Assembly/*"):
         if element.tag in ASSEM_TAGS:
-            item = _read_assembly(reader, element)
-            device.assemblies.setdefault(item.keyword, item)
+            assembly = _read_assembly(reader, element)
+            device.assemblies.setdefault(assembly.keyword, assembly)
     for element in process.findall("ParameterGroup/Group"):
         device.groups.append(_read_group(reader, element))
 
@@ -305,8 +305,8 @@ def _read_modular(reader: _Reader, element) -> Modular:
         for rack in module.findall("Rack"):
             number = _id_number(rack, "Rack")
             if number is not None:
-                modular.racks.append(Rack(number, *(child(rack, tag, _integer) for tag in
-                                                    ("VendCode", "ProdType", "ProdCode", "MajRev", "MinRev")),
+                key = [child(rack, tag, _integer) for tag in ("VendCode", "ProdType", "ProdCode", "MajRev", "MinRev")]
+                modular.racks.append(Rack(number, key[0], key[1], key[2], key[3], key[4],
                                           tuple(reader.convert(s, _integer) for s in rack.findall("LegalSlot"))))
         modular.external_id = child(module, "ExternalID", path_items)
         modular.generic_id = child(module, "GenericID", path_items)

@@ -173,7 +173,7 @@ def _write_identity(body, device: Device) -> None:
     _leaf(attributes, "ProdType", _number(identity.product_type, "UINT"), "0", **get)
     _leaf(attributes, "ProdTypeStr", _clean(identity.product_type_string), "")
     _leaf(attributes, "ProdCode", _number(identity.product_code, "UINT"), "0", **get)
-    revision = etree.SubElement(attributes, "ProdRevision", **get)
+    revision = etree.SubElement(attributes, "ProdRevision", get)
     _leaf(revision, "MajRev", _number(identity.major_revision, "USINT"), "0")
     _leaf(revision, "MinRev", _number(identity.minor_revision, "USINT"), "0")
     _leaf(attributes, "ProdName", _clean(identity.product_name), "", **get)
@@ -255,9 +255,9 @@ def _write_application_process(device: Device) -> etree._Element | None:
     if device.assemblies:
         assembly = etree.SubElement(process, "Assembly")
         for tag in ASSEM_TAGS:
-            for item in device.assemblies.values():
-                if item.family == tag and re.fullmatch(tag + tables.INSTANCE_NUMBER, item.keyword):
-                    _write_assembly(assembly, item)
+            for each in device.assemblies.values():
+                if each.family == tag and re.fullmatch(tag + tables.INSTANCE_NUMBER, each.keyword):
+                    _write_assembly(assembly, each)
     groups = [g for g in _unique(device.groups, "Group")]
     if groups:
         group_list = etree.SubElement(process, "ParameterGroup")
@@ -277,7 +277,7 @@ def _write_param_class(parameter, param_class: ParamClass) -> None:
     attributes = etree.SubElement(etree.SubElement(parameter, "Parameter_Class"), "Parameter_ClassAttributes")
     get = {"Access_Rule": "Get"}
     # MaxInstance has no content in the XSD: the [ParamClass] MaxInst value is an edsconv:Value
-    etree.SubElement(attributes, "MaxInstance", **get)
+    etree.SubElement(attributes, "MaxInstance", get)
     descriptor = _word(param_class.descriptor)
     _leaf(attributes, "ParameterClassDescriptor", descriptor and "0x" + descriptor, "", **get)
     _leaf(attributes, "ConfigurationAssemblyInstance", _number(param_class.cfg_assembly, "UINT"), "", **get)
@@ -346,8 +346,8 @@ def _member_text(value) -> str | None:
 
 
 def _write_extensions(function, device: Device) -> None:
-    for section, entries in device.extra_entries.items():
-        write_entries(etree.SubElement(function, EDSCONV + "ExtraEntries", section=section), entries)
+    for name, entries in device.extra_entries.items():
+        write_entries(etree.SubElement(function, EDSCONV + "ExtraEntries", section=name), entries)
     for section in device.other_sections:
         write_entries(etree.SubElement(function, EDSCONV + "Section", name=section.name), section.entries)
     if device.comments:

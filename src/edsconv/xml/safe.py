@@ -21,13 +21,6 @@ from edsconv.diagnostics import Diagnostic, Rule
 #: Larger inputs are refused before parsing. The biggest real profiles are a few MiB.
 MAX_XML_BYTES = 64 * 1024 * 1024
 
-_PARSER_OPTIONS = {
-    "resolve_entities": False,
-    "no_network": True,
-    "load_dtd": False,
-    "dtd_validation": False,
-    "huge_tree": False,
-}
 
 # An entity declaration can only stand in a DOCTYPE's internal subset; looking
 # for one in the raw bytes, in each encoding XML allows without a declaration,
@@ -87,7 +80,7 @@ class XmlDocument:
         libxml2 records the line where the start tag *ends* and no column, so
         the tag's ``<`` is looked for on that line and the few before it.
         """
-        line = element.sourceline or 0
+        line = source_line(element)
         if not line:
             return 0, 0
         qname = etree.QName(element)
@@ -97,6 +90,12 @@ class XmlDocument:
             if column >= 0:
                 return candidate, column + 1
         return line, 1
+
+
+def source_line(element: etree._Element) -> int:
+    """The line libxml2 recorded for ``element``, 0 when none (lxml-stubs 0.5 leave ``sourceline`` untyped)."""
+    line: object = element.sourceline
+    return line if isinstance(line, int) else 0
 
 
 def read_xml(path: str | Path, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
@@ -113,7 +112,8 @@ def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES, path: str | None = No
         # not read, so no position within it: the file as a whole, from its start
         raise XmlTooLargeError(f"input larger than {max_bytes} bytes refused", 1, 1)
     _refuse_entity_declarations(data)
-    parser = etree.XMLParser(**_PARSER_OPTIONS)
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False,
+                             huge_tree=False)
     try:
         root = etree.fromstring(data, parser)
     except etree.XMLSyntaxError as error:
@@ -123,7 +123,8 @@ def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES, path: str | None = No
         raise XmlSyntaxError(f"not well-formed: {message}", line, column) from None
     tree = root.getroottree()
     dtd = tree.docinfo.internalDTD
-    if dtd is not None and any(True for _ in dtd.iterentities()):
+    # lxml-stubs 0.5 do not declare DTD.iterentities
+    if dtd is not None and any(True for _ in dtd.iterentities()):  # type: ignore[union-attr]
         # Reached only by encodings the byte scan does not cover.
         raise UnsafeXmlError(_ENTITY_MESSAGE, 1, 1)
     return XmlDocument(tree, data.decode(tree.docinfo.encoding or "utf-8", errors="replace").splitlines(), path)

@@ -116,7 +116,7 @@ def schema_cache_file(xsd: str, xmlschema_version: str) -> Path | None:
 
 # Unpickling runs code chosen by whoever wrote the file: edsconv.cache reads only
 # files of the current user's own cache directory.
-def _read_cache(cache_file: Path, schema_class: type) -> xmlschema.XMLSchemaBase | None:
+def _read_cache(cache_file: Path, schema_class: type[xmlschema.XMLSchemaBase]) -> xmlschema.XMLSchemaBase | None:
     """The cached schema, or ``None`` when absent, untrusted or unreadable for any reason."""
     data = cache.read_file(cache_file)
     if data is None:
@@ -125,7 +125,7 @@ def _read_cache(cache_file: Path, schema_class: type) -> xmlschema.XMLSchemaBase
         schema = pickle.loads(data)
     except Exception:  # noqa: BLE001 - a corrupt pickle can raise nearly anything; rebuild and overwrite
         return None
-    return schema if type(schema) is schema_class and schema.built else None
+    return schema if isinstance(schema, schema_class) and type(schema) is schema_class and schema.built else None
 
 
 def _write_cache(cache_file: Path, schema: xmlschema.XMLSchemaBase) -> None:

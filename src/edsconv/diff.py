@@ -31,6 +31,7 @@ from edsconv.model import (
     GenericEntry,
     GenericSection,
     Parameter,
+    ParameterGroup,
     Reference,
 )
 from edsconv.model.values import PathItem, StringIMember
@@ -210,10 +211,7 @@ def diff(a: Device, b: Device) -> list[Change]:
     d.keyed(a.parameters, b.parameters, "params", lambda key, old, new: _parameter(d, key, old, new),
             lambda p: display(p.name))
     d.keyed({f"Group{g.number}": g for g in a.groups}, {f"Group{g.number}": g for g in b.groups}, "params",
-            lambda key, old, new: (d.value(f"{key} name", old.name, new.name, "params"),
-                                   d.value(f"{key} members", [m.keyword for m in old.members],
-                                           [m.keyword for m in new.members], "params")),
-            lambda g: display(g.name))
+            lambda key, old, new: _group(d, key, old, new), lambda g: display(g.name))
     d.value("Assembly Revision", a.assembly_revision, b.assembly_revision, "assemblies", "UINT")
     d.keyed(a.assemblies, b.assemblies, "assemblies", lambda key, old, new: _assembly(d, key, old, new),
             lambda x: display(x.name))
@@ -242,6 +240,11 @@ def _parameter(d: _Differ, key: str, old: Parameter, new: Parameter) -> None:
             d.value(f"{key} enum {value}", old_enum.get(value), new_enum.get(value), "params")
 
 
+def _group(d: _Differ, key: str, old: ParameterGroup, new: ParameterGroup) -> None:
+    d.value(f"{key} name", old.name, new.name, "params")
+    d.value(f"{key} members", [m.keyword for m in old.members], [m.keyword for m in new.members], "params")
+
+
 def _enum_text(enum: dict | None) -> str | None:
     if enum is None:
         return None
@@ -254,11 +257,11 @@ def _assembly(d: _Differ, key: str, old: Assembly, new: Assembly) -> None:
         before = old.members[index] if index < len(old.members) else None
         after = new.members[index] if index < len(new.members) else None
         what = f"{key} member {index + 1}"
-        if before is None:
+        if before is None and after is not None:
             d.changes.append(Change("added", what, None, _member_text(after), "assemblies"))
-        elif after is None:
+        elif after is None and before is not None:
             d.changes.append(Change("removed", what, _member_text(before), None, "assemblies"))
-        elif not same(before, after):
+        elif before is not None and after is not None and not same(before, after):
             d.changes.append(Change("changed", what, _member_text(before), _member_text(after), "assemblies"))
 
 

@@ -169,7 +169,9 @@ class Revision:
         return f"{self.major}.{self.minor}"
 
 
-def _describe(value: Value) -> str:
+def _describe(value: Value | None) -> str:
+    if value is None:
+        return "an empty field"
     if isinstance(value, Group):
         return "a brace group"
     if isinstance(value, String):
@@ -177,7 +179,7 @@ def _describe(value: Value) -> str:
     return repr(value.raw)
 
 
-def _scalar(value: Value, expected: str) -> str:
+def _scalar(value: Value | None, expected: str) -> str:
     if not isinstance(value, Scalar):
         raise ValueProblem(WRONG_KIND, f"expected {expected}, found {_describe(value)}")
     return value.raw
@@ -189,7 +191,7 @@ def _sign_and_digits(raw: str) -> tuple[int, str]:
     return 1, raw
 
 
-def to_integer(value: Value, type_name: str) -> int:
+def to_integer(value: Value | None, type_name: str) -> int:
     """USINT ... ULINT, SINT ... LINT, BYTE ... LWORD, BOOL and the CIP time types.
 
     Decimal without leading zeros; ``0x`` hexadecimal with at most the digits the
@@ -198,7 +200,7 @@ def to_integer(value: Value, type_name: str) -> int:
     """
     data_type = tables.DATA_TYPES_BY_NAME[type_name]
     raw = _scalar(value, f"an integer ({type_name})")
-    kind = value.kind
+    kind = Scalar(raw).kind
     if kind is ValueKind.HEX:
         digits = raw[2:]
         limit = data_type.hex_digits or 8
@@ -348,7 +350,7 @@ def to_revision(value: Value) -> Revision:
     return revision
 
 
-def to_text(value: Value) -> str:
+def to_text(value: Value | None) -> str:
     """EDS_Char_Array: the characters of a (possibly concatenated) string."""
     if not isinstance(value, String):
         raise ValueProblem(WRONG_KIND, f"expected a quoted string, found {_describe(value)}")

@@ -100,7 +100,7 @@ def describe_parameter(parameter: Parameter) -> dict:
     if any(links.values()):
         doc["scaling_links"] = links
     if parameter.size_adder:
-        doc["size_adder"] = dict(zip(("minimum", "maximum", "default"), plain(parameter.size_adder)))
+        doc["size_adder"] = dict(zip(("minimum", "maximum", "default"), plain(parameter.size_adder), strict=False))
     return doc
 
 
@@ -209,7 +209,7 @@ def describe_connection_parameters(connection: Connection) -> dict | None:
     table = tables.CONNECTION_PARAMETER_BITS
     doc: dict[str, Any] = {"value": f"0x{value:08X}"}
     for direction in ("O=>T", "T=>O"):
-        def get(name: str) -> int:
+        def get(name: str, direction: str = direction) -> int:
             return table.field(f"{direction} {name}").extract(value)
 
         doc[direction] = {

@@ -17,14 +17,14 @@ from pathlib import Path
 from lxml import etree
 
 import edsconv
-from edsconv.xml.convert import profile_documents
+from common import best_of, corpus_files, options
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
 from edsconv.model import Device
 from edsconv.xml.commnet import read_commnet_profile
 from edsconv.xml.common import Header
+from edsconv.xml.convert import profile_documents
 from edsconv.xml.device_read import read_device_profile
-from common import best_of, corpus_files, options
 from generate import generate
 
 

@@ -21,8 +21,8 @@ logging.basicConfig(level=logging.CRITICAL)  # before eds_pie, which logs every 
 from eds_pie.eds_pie import CIP_EDS  # noqa: E402
 
 import edsconv  # noqa: E402
-from edsconv.eds.source import decode  # noqa: E402
 from common import best_of, corpus_files, options  # noqa: E402
+from edsconv.eds.source import decode  # noqa: E402
 
 
 def edsconv_lint(data: bytes) -> None:

@@ -23,6 +23,7 @@ from typing import Any
 from edsconv import spec_tables as tables
 from edsconv.eds.syntax import Group, Scalar, String
 from edsconv.model import (
+    PARAMETER_FIELD_ATTRIBUTES,
     SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     AssemblyMember,
@@ -33,6 +34,7 @@ from edsconv.model import (
     Parameter,
     ParameterGroup,
     Reference,
+    parameter_field_type,
 )
 from edsconv.model.values import PathItem, StringIMember
 
@@ -174,11 +176,19 @@ def _single_entry_types(section: str) -> dict[str, str]:
 _FILE = _single_entry_types("File")
 _IDENTITY = _single_entry_types("Device")
 _PARAM_CLASS = _single_entry_types("ParamClass")
-_PARAMETER = {"link_path_size": "USINT", "link_path": "EPATH", "descriptor": "WORD", "data_type_code": "code",
-              "data_size": "USINT", "name": "", "units": "", "help": "", "minimum": "", "maximum": "",
-              "default": "", "international_name": "", "international_units": "", "international_help": ""}
-_SCALING = {"multiplier": "UINT", "divisor": "UINT", "base": "UINT", "offset": "INT", "multiplier_link": "UINT",
-            "divisor_link": "UINT", "base_link": "UINT", "offset_link": "UINT", "decimal_precision": "USINT"}
+
+
+def _parameter_field_types() -> tuple[dict[str, str], dict[str, str]]:
+    """attribute -> type of the Parameter fields and of its Scaling (Table C.13), in field order."""
+    parameter: dict[str, str] = {}
+    scaling: dict[str, str] = {}
+    for attribute in PARAMETER_FIELD_ATTRIBUTES[1:]:
+        record, _, name = attribute.rpartition(".")
+        (scaling if record else parameter)[name] = parameter_field_type(attribute)
+    return parameter, scaling
+
+
+_PARAMETER, _SCALING = _parameter_field_types()
 _ASSEMBLY = {"name": "", "path": "EPATH", "size": "UINT", "descriptor": "WORD", "module_member_list": ""}
 _CONNECTION = {"trigger_transport": "DWORD", "parameters": "DWORD"}
 _ENDPOINTS = (("o_to_t", "O=>T"), ("t_to_o", "T=>O"), ("config1", "config #1"), ("config2", "config #2"))

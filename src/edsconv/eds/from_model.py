@@ -21,6 +21,7 @@ from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Se
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
+    PARAMETER_FIELD_ATTRIBUTES,
     SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     CommentNote,
@@ -29,6 +30,8 @@ from edsconv.model import (
     GenericEntry,
     Parameter,
     Reference,
+    parameter_field,
+    parameter_field_type,
 )
 from edsconv.model.values import PathItem, Revision, StringIMember
 
@@ -227,27 +230,12 @@ def _param_values(parameter: Parameter, values, proxy: bool) -> list:
 
 
 def _parameter_entries(parameter: Parameter) -> list[Entry]:
+    # C.4.1.5.3.1: any field of a ProxyParam may be Module
     proxy = parameter.family == "ProxyParam"
-    s = parameter.scaling
-    code = parameter.data_type_code
-    fields = [
-        Scalar("0"),
-        render_value(parameter.link_path_size, "USINT"),
-        render_value(parameter.link_path, "EPATH"),
-        render_value(parameter.descriptor, "WORD", proxy),
-        render_value(code, "code", proxy),
-        render_value(parameter.data_size, "USINT", proxy),
-        render_value(parameter.name, "EDS_Char_Array", proxy),
-        render_value(parameter.units, "EDS_Char_Array", proxy),
-        render_value(parameter.help, "EDS_Char_Array", proxy),
-        *_param_values(parameter, (parameter.minimum, parameter.maximum, parameter.default), proxy),
-        *(render_value(v, t) for v, t in ((s.multiplier, "UINT"), (s.divisor, "UINT"), (s.base, "UINT"),
-                                          (s.offset, "INT"), (s.multiplier_link, "UINT"),
-                                          (s.divisor_link, "UINT"), (s.base_link, "UINT"),
-                                          (s.offset_link, "UINT"), (s.decimal_precision, "USINT"))),
-        render_value(parameter.international_name), render_value(parameter.international_units),
-        render_value(parameter.international_help),
-    ]
+    fields = [Scalar("0")]  # field 1 is reserved and shall be 0
+    for attribute in PARAMETER_FIELD_ATTRIBUTES[1:]:
+        type_name = parameter_field_type(attribute) or parameter.value_type(attribute)
+        fields.append(render_value(parameter_field(parameter, attribute), type_name, proxy))
     spec = tables.entry_spec("Params", parameter.keyword)
     entries = [_entry(parameter.keyword, fields, spec.required_count if spec else 0)]
     number = parameter.number

@@ -38,8 +38,8 @@ from edsconv.model import (
     Query,
     Rack,
     Reference,
-    Scaling,
 )
+from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES, set_parameter_field
 from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
 
 OBSOLETE_DATA_TYPE = rule(
@@ -113,6 +113,10 @@ def as_written(value: Value | None):
     if isinstance(value, Group):
         return [as_written(f.value) for f in value.fields]
     return value
+
+
+# Table C.17: these fields are read by the parameter's data type, once that is known
+_TYPED_BY_DATA_TYPE = ("minimum", "maximum", "default")
 
 
 class _Builder:
@@ -256,17 +260,16 @@ class _Builder:
         v = self.fields(entry, spec, proxy=proxy)
         v += [None] * (len(tables.PARAM_FIELDS) - len(v))
         parameter = Parameter(entry.keyword, spec.keyword, tables.instance_number(entry.keyword), entry=entry)
-        parameter.link_path_size, parameter.link_path, parameter.descriptor = v[1], v[2], v[3]
-        parameter.data_type_code, parameter.data_size = v[4], v[5]
-        parameter.name, parameter.units, parameter.help = v[6], v[7], v[8]
-        parameter.data_type = self.data_type(entry, v[4])
-        for attribute, index in (("minimum", 9), ("maximum", 10), ("default", 11)):
-            setattr(parameter, attribute, self.param_value(entry, index, parameter, attribute, proxy))
-        parameter.scaling = Scaling(*v[12:21])
-        parameter.international_name, parameter.international_units, parameter.international_help = v[21:24]
+        for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES):
+            if attribute and attribute not in _TYPED_BY_DATA_TYPE:
+                set_parameter_field(parameter, attribute, v[index])
+        parameter.data_type = self.data_type(entry, parameter.data_type_code)
+        for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES):
+            if attribute in _TYPED_BY_DATA_TYPE:
+                setattr(parameter, attribute, self.param_value(entry, index, parameter, attribute, proxy))
         return parameter
 
-    def data_type(self, entry: Entry, code) -> tables.DataType | None:
+    def data_type(self, entry: Entry, code: Any) -> tables.DataType | None:
         if not isinstance(code, int):
             return None  # empty, Module, or a structured type given as a path
         if code in tables.DATA_TYPES_BY_CODE:

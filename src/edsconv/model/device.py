@@ -219,6 +219,39 @@ class Parameter:
                             s.offset or 0, precision)
 
 
+#: The Parameter attribute each ParamN field lands in (Table C.13), in field order. Field 1 is
+#: reserved (always 0) and kept nowhere: ""; ``scaling.x`` is attribute x of its Scaling.
+PARAMETER_FIELD_ATTRIBUTES: tuple[str, ...] = (
+    "", "link_path_size", "link_path", "descriptor", "data_type_code", "data_size", "name", "units", "help",
+    "minimum", "maximum", "default",
+    "scaling.multiplier", "scaling.divisor", "scaling.base", "scaling.offset", "scaling.multiplier_link",
+    "scaling.divisor_link", "scaling.base_link", "scaling.offset_link", "scaling.decimal_precision",
+    "international_name", "international_units", "international_help",
+)
+
+
+def parameter_field(parameter: Parameter, attribute: str) -> Any:
+    """The value of a :data:`PARAMETER_FIELD_ATTRIBUTES` attribute of ``parameter``."""
+    record, _, name = attribute.rpartition(".")
+    return getattr(parameter.scaling if record else parameter, name)
+
+
+def parameter_field_type(attribute: str) -> str:
+    """The type the ParamN field of ``attribute`` is written in: its FieldSpec's (Table C.13), the
+    data type code as a ``code``; "" for minimum, maximum and default, which have the parameter's
+    own (:meth:`Parameter.value_type`)."""
+    if attribute in ("minimum", "maximum", "default"):
+        return ""
+    if attribute == "data_type_code":
+        return "code"
+    return tables.PARAM_FIELDS[PARAMETER_FIELD_ATTRIBUTES.index(attribute)].alternatives[0]
+
+
+def set_parameter_field(parameter: Parameter, attribute: str, value: Any) -> None:
+    record, _, name = attribute.rpartition(".")
+    setattr(parameter.scaling if record else parameter, name, value)
+
+
 @dataclass(slots=True)
 class ParameterGroup:
     """GroupN of [Groups] (Table C.19)."""

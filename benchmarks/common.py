@@ -41,7 +41,8 @@ def shapes(corpus: Path, quick: bool) -> list[Shape]:
     names = (["params-0.5mb.eds", "dense-params-10k.eds", "dense-mixed-0.4mb.eds"] if quick
              else ["params-2mb.eds", "dense-params-40k.eds", "dense-mixed-1.7mb.eds"])
     kinds = ["ez", "dense", "dense"]
-    return real + [Shape(name.removesuffix(".eds"), kind, [generate(name)]) for name, kind in zip(names, kinds)]
+    return real + [Shape(name.removesuffix(".eds"), kind, [generate(name)])
+                   for name, kind in zip(names, kinds, strict=True)]
 
 
 def best_of(repeat: int, function, *arguments, budget: float = 10.0) -> tuple[float, object]:

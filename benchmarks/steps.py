@@ -27,7 +27,7 @@ from edsconv.model import Device  # noqa: E402
 from edsconv.xml.commnet import read_commnet_profile  # noqa: E402
 from edsconv.xml.common import Header  # noqa: E402
 from edsconv.xml.convert import profile_documents  # noqa: E402
-from edsconv.xml.device import read_device_profile  # noqa: E402
+from edsconv.xml.device_read import read_device_profile  # noqa: E402
 
 # Strings, comments, numbers and words, punctuation: the tokens of an EDS, white space skipped.
 FLOOR = re.compile(rb'L?"(?:[^"\\\n]|\\.)*"|\$[^\n]*|[A-Za-z0-9_.:+-]+|[^ \t\r\n\f\v]')

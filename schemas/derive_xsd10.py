@@ -52,7 +52,7 @@ from pathlib import Path
 from lxml import etree
 
 XSD = "http://www.w3.org/2001/XMLSchema"
-Q = "{%s}" % XSD
+Q = f"{{{XSD}}}"
 SCHEMAS = Path(__file__).resolve().parent
 OUT = SCHEMAS / "xsd10"
 SOURCES = ("CIP_Device_Profile.xsd", "ENet_CommNet_Profile.xsd")

@@ -28,7 +28,7 @@ from conftest import REPO, SHARED_REAL
 from edsconv.resources import data_dir
 from edsconv.xml.commnet import commnet_profile
 from edsconv.xml.common import Header, InvalidProfile, serialise
-from edsconv.xml.device import device_profile
+from edsconv.xml.device_write import device_profile
 from edsconv.xml.schemas import PROFILE_KINDS, kind_named, load_schema, load_write_validator, write_validator_path
 
 CORPUS_XML = REPO / "corpus" / "xml"

@@ -281,8 +281,10 @@ class _Merger:
             item = proxy.fields[position]
             if _is_word(item, MODULE):
                 deferred = self._deferred(proxy, proxied, position, MODULE)
-                ok = ok and deferred is not None
-                combined.append(deferred)
+                if deferred is None:
+                    ok = False
+                else:
+                    combined.append(deferred)
             else:
                 combined.append(_copy_field(item))
         return combined if ok else None
@@ -319,8 +321,7 @@ class _Merger:
         fields = self._plain(proxy, proxied, range(len(proxy.fields)))
         if fields is None:
             return None
-        _, number = tables.split_numbered(proxy.keyword)
-        adder = self.proxy.get(("ProxyParamSizeAdder", number))
+        adder = self.proxy.get(("ProxyParamSizeAdder", tables.instance_number(proxy.keyword)))
         if adder is not None:
             self._add_sizes(fields, adder)
         return fields
@@ -329,9 +330,9 @@ class _Merger:
         for source, family in ((self.proxy, "ProxyEnum"), (self.proxied, "ProxiedEnum")):
             enum = source.get((family, number))
             if enum is not None:
+                owner = _name(self.adapter if source is self.proxy else self.module)
                 return [Entry(f"Enum{number}", [_copy_field(item) for item in enum.fields],
-                              leading_comments=[Comment(f" {enum.keyword} of "
-                                                        f"{_name(self.adapter if source is self.proxy else self.module)}")])]
+                              leading_comments=[Comment(f" {enum.keyword} of {owner}")])]
         return []
 
     def _add_sizes(self, fields: list[Field], adder: Entry) -> None:
@@ -365,7 +366,7 @@ class _Merger:
         return tables.DATA_TYPES_BY_CODE.get(code) or tables.OBSOLETE_DATA_TYPE_IDS.get(code)
 
     @staticmethod
-    def _sum(value: Value, addend: Value, data_type: tables.DataType | None) -> str:
+    def _sum(value: Value | None, addend: Value | None, data_type: tables.DataType | None) -> str:
         """The spelling of ``value + addend``, or ``"!reason"``."""
         from edsconv.model.values import ValueNote, ValueProblem, convert
 
@@ -373,6 +374,8 @@ class _Merger:
             return "!the parameter's data type is not a number type"
         numbers = []
         for item in (value, addend):
+            if item is None:
+                return "!an empty field"
             try:
                 numbers.append(convert(item, data_type.name))
             except ValueNote as note:
@@ -386,7 +389,7 @@ class _Merger:
             return repr(float(total))
         if isinstance(value, Scalar) and value.kind is ValueKind.HEX:
             digits = len(value.raw) - 2
-            return f"0x{total & ((1 << (8 * data_type.size)) - 1):0{digits}X}"
+            return f"0x{total & ((1 << (8 * (data_type.size or 0))) - 1):0{digits}X}"
         return str(total)
 
     # Assembly
@@ -397,7 +400,8 @@ class _Merger:
         for position in range(header):
             if _is_word(proxy.fields[position], MODULE_MEMBER_LIST):
                 self.report(BAD_MODULE_MEMBER_LIST, f"{proxy.keyword} field {position + 1} is {MODULE_MEMBER_LIST}, "
-                            "which may stand only in place of a member pair (fields 7, 8 and on, Table C.20)", self.adapter, proxy.fields[position])
+                            "which may stand only in place of a member pair (fields 7, 8 and on, Table C.20)",
+                            self.adapter, proxy.fields[position])
                 ok = False
         fields = self._plain(proxy, proxied, range(header)) if ok else None
         ok = ok and fields is not None
@@ -408,13 +412,14 @@ class _Merger:
             position = ASSEM_HEADER_FIELDS + start
             if _is_word(size, MODULE_MEMBER_LIST) or _is_word(reference, MODULE_MEMBER_LIST):
                 partner = reference if _is_word(size, MODULE_MEMBER_LIST) else size
-                if not _empty(partner):
+                if partner is not None and partner.value is not None:
                     self.report(BAD_MODULE_MEMBER_LIST, f"{proxy.keyword} fields {position + 1}-{position + 2}: "
                                 f"{MODULE_MEMBER_LIST} stands in place of the whole pair; the other field "
                                 f"shall be empty, not {partner.raw or 'a group'}", self.adapter, partner)
                     ok = False
                     continue
-                expanded = self._member_list(proxy, proxied, size if _is_word(size, MODULE_MEMBER_LIST) else reference)
+                listed = size if reference is None or _is_word(size, MODULE_MEMBER_LIST) else reference
+                expanded = self._member_list(proxy, proxied, listed)
                 ok = ok and expanded is not None
                 combined.extend(expanded or ())
                 continue
@@ -427,7 +432,7 @@ class _Merger:
             combined.append(_copy_field(size))
             if reference is not None:
                 combined.append(_copy_field(reference))
-        return [*fields, *combined] if ok else None
+        return [*fields, *combined] if ok and fields is not None else None
 
     def _member_list(self, proxy: Entry, proxied: Entry | None, item: Field) -> list[Field] | None:
         if proxied is None:

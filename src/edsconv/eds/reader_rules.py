@@ -80,7 +80,8 @@ NOT_ASCII = rule(
     explanation=r"""
         An EDS is ASCII; edsconv reads UTF-8, Windows-1252 and Latin-1 all the same and
         names the first line that is not ASCII, and reads UTF-16 and UTF-32 files by their
-        byte order mark, but other tools may show or reject such text. Write the text in a UNICODE string with `\u` escapes instead.
+        byte order mark, but other tools may show or reject such text. Write the text in a
+        UNICODE string with `\u` escapes instead.
     """,
     bad=block("""
         [Device]

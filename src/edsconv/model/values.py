@@ -12,6 +12,7 @@ from __future__ import annotations
 import datetime
 import re
 import struct
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
@@ -168,7 +169,9 @@ class Revision:
         return f"{self.major}.{self.minor}"
 
 
-def _describe(value: Value) -> str:
+def _describe(value: Value | None) -> str:
+    if value is None:
+        return "an empty field"
     if isinstance(value, Group):
         return "a brace group"
     if isinstance(value, String):
@@ -176,7 +179,7 @@ def _describe(value: Value) -> str:
     return repr(value.raw)
 
 
-def _scalar(value: Value, expected: str) -> str:
+def _scalar(value: Value | None, expected: str) -> str:
     if not isinstance(value, Scalar):
         raise ValueProblem(WRONG_KIND, f"expected {expected}, found {_describe(value)}")
     return value.raw
@@ -188,7 +191,7 @@ def _sign_and_digits(raw: str) -> tuple[int, str]:
     return 1, raw
 
 
-def to_integer(value: Value, type_name: str) -> int:
+def to_integer(value: Value | None, type_name: str) -> int:
     """USINT ... ULINT, SINT ... LINT, BYTE ... LWORD, BOOL and the CIP time types.
 
     Decimal without leading zeros; ``0x`` hexadecimal with at most the digits the
@@ -197,7 +200,7 @@ def to_integer(value: Value, type_name: str) -> int:
     """
     data_type = tables.DATA_TYPES_BY_NAME[type_name]
     raw = _scalar(value, f"an integer ({type_name})")
-    kind = value.kind
+    kind = Scalar(raw).kind
     if kind is ValueKind.HEX:
         digits = raw[2:]
         limit = data_type.hex_digits or 8
@@ -236,6 +239,8 @@ def to_real(value: Value, type_name: str) -> float:
     """REAL / LREAL: integer, decimal or scientific notation, or a reserved word (C.4.1.3.10)."""
     data_type = tables.DATA_TYPES_BY_NAME[type_name]
     limits = data_type.floats
+    if limits is None:
+        raise KeyError(f"{type_name} is not a floating point type")
     raw = _scalar(value, f"a floating point value ({type_name})")
     kind = value.kind
     if kind is ValueKind.REAL_WORD:
@@ -258,10 +263,10 @@ def to_real(value: Value, type_name: str) -> float:
         decimal = _DECIMAL.fullmatch(raw)
         if decimal and len(decimal["whole"]) + len(decimal["fraction"]) > limits.decimal_digits:
             raise ValueProblem(REAL_NOTATION, f"{raw} has more than {limits.decimal_digits} digits ({type_name})")
-    number = float(raw)
-    if not data_type.in_range(number) and not _rounds_to_single(number, data_type):
+    real = float(raw)
+    if not data_type.in_range(real) and not _rounds_to_single(real, data_type):
         raise ValueProblem(OUT_OF_RANGE, f"{raw} is outside the {type_name} range")
-    return number
+    return real
 
 
 def _rounds_to_single(number: float, data_type: tables.DataType) -> bool:
@@ -315,10 +320,14 @@ def to_time(value: Value) -> datetime.time:
     match = _TIME.fullmatch(raw)
     if not match:
         raise ValueProblem(BAD_TIME, f"{raw!r} is not written hh:mm:ss")
-    try:
-        return datetime.time(int(match["hour"]), int(match["minute"]), int(match["second"]))
-    except ValueError:
-        raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)") from None
+    parts = {name: int(match[name]) for name in tables.EDS_TIME_OF_DAY_LIMITS}
+    if not _within(tables.EDS_TIME_OF_DAY_LIMITS, parts):
+        raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)")
+    return datetime.time(parts["hour"], parts["minute"], parts["second"])
+
+
+def _within(limits: Mapping[str, tuple[int, int]], values: Mapping[str, int]) -> bool:
+    return all(low <= values[name] <= high for name, (low, high) in limits.items())
 
 
 def to_revision(value: Value) -> Revision:
@@ -333,13 +342,15 @@ def to_revision(value: Value) -> Revision:
     revision = Revision(int(match["major"]), int(match["minor"]))
     if revision == Revision(0, 0):
         raise ValueProblem(BAD_REVISION, "revision 0.0 is invalid")
-    if len(match["major"]) > 1 or len(match["minor"]) > 1:
+    # one digit each: within the limits and without leading zeros
+    if not _within(tables.EDS_REVISION_LIMITS, {"major": revision.major, "minor": revision.minor}) \
+            or len(match["major"]) > 1 or len(match["minor"]) > 1:
         raise ValueNote(REVISION_BEYOND_2003, f"revision {raw}: the 2003 text allows one digit per part "
                         f"(read as major {revision.major}, minor {revision.minor})", revision)
     return revision
 
 
-def to_text(value: Value) -> str:
+def to_text(value: Value | None) -> str:
     """EDS_Char_Array: the characters of a (possibly concatenated) string."""
     if not isinstance(value, String):
         raise ValueProblem(WRONG_KIND, f"expected a quoted string, found {_describe(value)}")
@@ -347,7 +358,7 @@ def to_text(value: Value) -> str:
 
 
 # https postdates the 2003 text and is what every vendor site uses now.
-_URL = re.compile(r"(?i)(?:%s|https)://" % "|".join(tables.EDS_URL_SCHEMES))
+_URL = re.compile(rf"(?i)(?:{'|'.join(tables.EDS_URL_SCHEMES)}|https)://")
 
 
 def to_url(value: Value) -> str:
@@ -382,7 +393,7 @@ def to_stringi(value: Value) -> tuple[StringIMember, ...]:
         member = member_field.value
         if not isinstance(member, Group) or len(member.fields) != 4 or any(f.value is None for f in member.fields):
             raise ValueProblem(BAD_STRINGI, "each STRINGI language is {\"lang\", type, charset, \"text\"}")
-        language, type_code, charset, text = (f.value for f in member.fields)
+        language, type_code, charset, text = (f.value or Scalar("") for f in member.fields)  # none is empty
         language_text = to_text(language)
         if len(language_text) != 3:
             raise ValueProblem(BAD_STRINGI, f"language code {language_text!r} is not three letters (ISO 639-2/T)")
@@ -447,7 +458,7 @@ def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]
         name = match["bracketed"] or match["word"]
         if name in tables.PATH_KEYWORDS and not match["bracketed"]:
             items.append(PathItem(keyword=name))
-        elif re.fullmatch(r"(?:Proxy)?Param[1-9][0-9]*", name):
+        elif tables.PATH_REFERENCE_RE.fullmatch(name):
             items.append(PathItem(reference=name, local=bool(match["bracketed"])))
         else:
             raise ValueProblem(BAD_EPATH, f"path {text!r}: {name!r} is neither a byte, [ParamN], ParamN nor "
@@ -457,9 +468,8 @@ def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]
 
 def epath_bytes(items: tuple[PathItem, ...]) -> bytes | None:
     """The bytes of a path made only of bytes; None when it holds substitutions."""
-    if any(item.byte is None for item in items):
-        return None
-    return bytes(item.byte for item in items)
+    data = [item.byte for item in items]
+    return None if None in data else bytes(b for b in data if b is not None)
 
 
 #: Converter of each type name a FieldSpec can give, for the value-only types.

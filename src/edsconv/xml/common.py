@@ -22,7 +22,7 @@ from edsconv.model import Device
 
 #: Namespace of edsconv's elements in the schemas' extension points.
 EDSCONV_NAMESPACE = "urn:x-edsconv:eds-extensions:1"
-EDSCONV = "{%s}" % EDSCONV_NAMESPACE
+EDSCONV = f"{{{EDSCONV_NAMESPACE}}}"
 NSMAP = {"edsconv": EDSCONV_NAMESPACE}
 
 

@@ -101,7 +101,7 @@ def test_io_adapter_reads_back_typed_values(io_adapter):
                                  1)]
 
 
-def test_io_adapter_port_and_required_minimum(io_adapter):
+def test_io_adapter_port_and_header(io_adapter):
     (port,) = io_adapter.xpath("//TransportLayers/Ports/Port")
     assert port.get("id") == "Port1"
     assert [(child.tag, child.text) for child in port] == [
@@ -112,18 +112,20 @@ def test_io_adapter_port_and_required_minimum(io_adapter):
     assert header.findtext("IASInterfaceType") == "CSI"
     body = io_adapter.find("ProfileBody")
     assert body.get("Revision") == "1.1" and body.get("CreateDate") == "2026-11-22"
-    # an EtherNet/IP device: the objects the EDS says nothing about get the marked minimum
-    marked = {m.getparent().tag for m in io_adapter.iterfind(".//e:RequiredMinimum", EDSCONV_PREFIX)}
-    assert marked == {
-        "ConnectionManager_InstanceOperations", "EtherNetIPLinkObject_InstanceAttributes",
-        "EtherNetIPLinkObject_InstanceOperations", "TCPIPInterfaceObject_InstanceAttributes",
-        "TCPIPInterfaceObject_InstanceOperations", "EncapsulationProtocol_Attributes",
-        "EncapsulationProtocol_Operations", "EtherNetIPLinkObject_ClassAttributes",
-        "EtherNetIPLinkObject_ClassOperations", "TCPIPInterfaceObject_ClassAttributes",
-        "TCPIPInterfaceObject_ClassOperations"}
-    assert io_adapter.find(".//Forward_Open").get("SupportedService") == "true"
-    assert io_adapter.find(".//EtherNetIPLinkObject_InstanceAttributes/MediaCounters").get("Access_Rule") == "None"
-    assert io_adapter.find(".//MessageRouter") is not None and len(io_adapter.find(".//MessageRouter")) == 0
+
+
+def test_io_adapter_states_no_service_or_attribute_the_eds_does_not(io_adapter):
+    """An EtherNet/IP device's EDS says nothing about the services of its Connection Manager or the
+    attributes of its EtherNet/IP objects: the profile has no SupportedService, no Access_Rule and
+    none of the objects, only what the schema requires (ConnectionManager, MessageRouter,
+    TransportLayers) around the connections and ports."""
+    assert io_adapter.xpath("//@SupportedService | //@Access_Rule") == []
+    body = io_adapter.find("ProfileBody")
+    assert [child.tag for child in body] == ["ApplicationLayers", "TransportLayers"]
+    assert [child.tag for child in body.find("ApplicationLayers")] == ["ConnectionManager", "MessageRouter"]
+    assert [child.tag for child in body.find("ApplicationLayers/ConnectionManager")] == ["ConnectionDescriptions"]
+    assert len(body.find("ApplicationLayers/MessageRouter")) == 0
+    assert [child.tag for child in body.find("TransportLayers")] == ["Ports"]
 
 
 # --- what the schema's types cannot hold -----------------------------------------------------
@@ -232,11 +234,10 @@ def test_hand_built_values_beyond_the_eds_reader():
     assert root.find(".//Ports") is None and root.find(".//e:Port", EDSCONV_PREFIX) is not None
 
 
-def test_a_device_without_ethernetip_gets_no_filled_objects():
+def test_a_device_without_connections_gets_no_descriptions():
     device = Device(ports=[Port(2, "DeviceNet", "A", None, 2)])
     root = assert_round_trip(device)
     assert root.find(".//NetworkManagement") is None and root.find(".//EtherNetIPLinkObject") is None
-    assert root.find(".//e:RequiredMinimum", EDSCONV_PREFIX) is None
     assert root.find(".//ConnectionDescriptions") is None
 
 

@@ -19,9 +19,7 @@ network profile"):
   (keyword number beyond the id pattern, a port type name that is no keyword, a repeated PortN);
 - ``edsconv:EntryOrder``: the order of the [Connection Manager] entries when it is not the
   schema's Connection*, ProxyConnect*, ProxiedConnect*;
-- ``edsconv:Field`` / ``edsconv:Empty`` / ``edsconv:Group`` in PortSpecific: Port fields 7...;
-- ``edsconv:RequiredMinimum``: the container holds the minimum edsconv fills for an EtherNet/IP
-  device (the EDS says nothing about it), not values read from the EDS.
+- ``edsconv:Field`` / ``edsconv:Empty`` / ``edsconv:Group`` in PortSpecific: Port fields 7....
 """
 
 from __future__ import annotations
@@ -288,102 +286,26 @@ def _ports(device: Device) -> list[etree._Element]:
     return ([ports] if len(ports) else []) + others
 
 
-# The minimum edsconv declares for an EtherNet/IP device, whose EDS says nothing
-# about these objects: what the schema fixes (attributes fixed Get/Set, services
-# fixed true), the services that make mandatory attributes readable, and
-# None/false for everything optional ("not declared", not "known absent").
-_GET, _SET, _NONE = "Get", "Set", "None"
-#: tag -> the attribute its children carry, then (child, value) pairs
-_REQUIRED_MINIMUM: dict[str, tuple[Any, ...]] = {
-    "ConnectionManager_InstanceOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
-        ("Get_Attribute_List", "false"), ("Set_Attribute_List", "false"), ("Get_Attribute_Single", "false"),
-        ("Set_Attribute_Single", "false"), ("Forward_Close", "true"), ("Unconnected_Send", "false"),
-        ("Forward_Open", "true"), ("Get_Connection_Data", "false"), ("Search_Connection_Data", "false"),
-        ("Ex_Forward_Open", "false"), ("Get_Object_Owner", "false")),
-    "EtherNetIPLinkObject_InstanceAttributes": (
-        "Access_Rule", ("InterfaceSpeed", _GET), ("InterfaceFlags", _GET), ("PhysicalAddress", _GET),
-        ("InterfaceCounters", _NONE), ("MediaCounters", _NONE)),
-    "EtherNetIPLinkObject_InstanceOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true"),
-        ("Get_and_Clear", "false")),
-    "TCPIPInterfaceObject_InstanceAttributes": (
-        "Access_Rule", ("Status", _GET), ("ConfigurationCapability", _GET), ("ConfigurationControl", _SET),
-        ("PhysicalLinkObject", _GET), ("InterfaceConfiguration", _SET), ("HostName", _SET)),
-    "TCPIPInterfaceObject_InstanceOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
-        ("Get_Attribute_Single", "true"), ("Set_Attribute_Single", "true")),
-    "EncapsulationProtocol_Operations": (
-        "SupportedService", ("NOP", "true"), ("ListServices", "true"), ("ListIdentity", "true"),
-        ("ListInterfaces", "false"), ("RegisterSession", "true"), ("UnRegisterSession", "true"),
-        ("SendRRData", "true"), ("SendUnitData", "true"), ("IndicateStatus", "false"), ("Cancel", "false")),
-    "EtherNetIPLinkObject_ClassAttributes": ("Access_Rule", ("ObjectRevision", _GET), ("MaxInstance", _GET)),
-    "EtherNetIPLinkObject_ClassOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true")),
-    "TCPIPInterfaceObject_ClassAttributes": ("Access_Rule", ("ObjectRevision", _GET), ("MaxInstance", _GET)),
-    "TCPIPInterfaceObject_ClassOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true")),
-}
-
-
-def _minimum(parent: etree._Element, tag: str) -> etree._Element:
-    """Container ``tag`` under ``parent`` with its required-minimum children and the marker."""
-    container = etree.SubElement(parent, tag)
-    if tag == "EncapsulationProtocol_Attributes":
-        etree.SubElement(container, "ProtocolVersion").text = "1"
-    else:
-        attribute, *children = _REQUIRED_MINIMUM[tag]
-        for child, value in children:
-            etree.SubElement(container, child, {attribute: value})
-    container.append(_ext("RequiredMinimum"))
-    return container
-
-
-def _object(parent: etree._Element, tag: str, *containers: str) -> None:
-    element = etree.SubElement(parent, tag)
-    for container in containers:
-        _minimum(element, container)
-
-
-def is_ethernetip_device(device: Device) -> bool:
-    """An EtherNet/IP device: a ClassN EtherNetIP (C.4.2.2.1) or a TCP port (C.4.2.2.2)."""
-    return device.is_ethernetip or any(p.type_name == tables.ETHERNETIP_PORT_TYPE for p in device.ports)
-
-
 def commnet_profile(device: Device, header: Header) -> etree._Element:
     """The ISO15745Profile root of the EtherNet/IP network profile of ``device``.
 
-    Connections and ports come from the EDS; for an EtherNet/IP device the
-    Connection Manager services, the Ethernet Link, TCP/IP Interface and
-    encapsulation objects get the required minimum (marked edsconv:RequiredMinimum).
+    It states only what the EDS states: its connections and ports. The schema requires
+    ConnectionManager, MessageRouter and TransportLayers, none of their children; the
+    objects whose services and attributes an EDS does not describe (Connection Manager
+    and Message Router operations, the EtherNet/IP Link, TCP/IP Interface and
+    encapsulation objects, NetworkManagement) are left out, since every SupportedService
+    or Access_Rule written there would claim what the EDS does not say.
     """
     root = etree.Element("ISO15745Profile", nsmap=NSMAP)
     root.append(header_element(header, "CommunicationNetwork", "EtherNet/IP", "COMM", "CSI"))
     body = etree.SubElement(root, "ProfileBody", file_description_attributes(device, header))
-    ethernetip = is_ethernetip_device(device)
     application = etree.SubElement(body, "ApplicationLayers")
     manager = etree.SubElement(application, "ConnectionManager")
-    if ethernetip:
-        _minimum(manager, "ConnectionManager_InstanceOperations")
     descriptions = _connection_descriptions(device)
     if descriptions is not None:
         manager.append(descriptions)
     etree.SubElement(application, "MessageRouter")
-    transport = etree.SubElement(body, "TransportLayers")
-    if ethernetip:
-        _object(transport, "EtherNetIPLinkObject", "EtherNetIPLinkObject_InstanceAttributes",
-                "EtherNetIPLinkObject_InstanceOperations")
-        _object(transport, "TCPIPInterfaceObject", "TCPIPInterfaceObject_InstanceAttributes",
-                "TCPIPInterfaceObject_InstanceOperations")
-        _object(transport, "EncapsulationProtocol", "EncapsulationProtocol_Attributes",
-                "EncapsulationProtocol_Operations")
-    transport.extend(_ports(device))
-    if ethernetip:
-        management = etree.SubElement(body, "NetworkManagement")
-        _object(management, "NM-EtherNetIPLinkObject", "EtherNetIPLinkObject_ClassAttributes",
-                "EtherNetIPLinkObject_ClassOperations")
-        _object(management, "NM-TCPIPInterfaceObject", "TCPIPInterfaceObject_ClassAttributes",
-                "TCPIPInterfaceObject_ClassOperations")
+    etree.SubElement(body, "TransportLayers").extend(_ports(device))
     etree.cleanup_namespaces(root, top_nsmap=NSMAP)
     return root
 
@@ -561,8 +483,8 @@ def read_commnet_profile(source: XmlDocument | etree._ElementTree | etree._Eleme
                          device: Device) -> list[Diagnostic]:
     """Fill ``device.connections`` and ``device.ports`` from a network profile (the document,
     its root or tree; the inverse of :func:`commnet_profile`, extension elements included);
-    the diagnostics name values that could not be read, at their element. The
-    required-minimum objects carry nothing the model keeps."""
+    the diagnostics name values that could not be read, at their element. The objects'
+    operations and attributes (SupportedService, Access_Rule) have no place in the model."""
     document = XmlDocument.of(source)
     reader = _Reader(device, document)
     body = document.tree.getroot().find("ProfileBody")

@@ -47,6 +47,7 @@ from __future__ import annotations
 import argparse
 import copy
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 from lxml import etree
@@ -173,10 +174,8 @@ def at_least_one_of(assertion: etree._Element) -> None:
 
 def derive(source: Path) -> bytes:
     """The XSD 1.0 rendition of the 1.1 schema ``source``, as bytes."""
-    tree = etree.parse(str(source), etree.XMLParser(remove_blank_text=True))
+    tree = parse_beside(source)
     root = tree.getroot()
-    for location in root.iter(Q + "include", Q + "redefine", Q + "import"):
-        location.set("schemaLocation", "../" + location.get("schemaLocation"))
     extended = extended_types(root)
     for assertion in list(root.iter(Q + "assert", Q + "assertion")):
         at_least_one_of(assertion)
@@ -190,30 +189,47 @@ def derive(source: Path) -> bytes:
         base = root.find(f"{Q}complexType[@name='{name}']")
         if base is not None and base.find(Q + "sequence") is not None:
             rewrite_wildcard(particles(base.find(Q + "sequence"))[-1], set())
-    root.insert(0, etree.Comment(NOTICE.format(name=source.name)))
+    return finish(tree, NOTICE.format(name=source.name))
+
+
+# --- shared with derive_as_printed.py: files derived into a subdirectory of schemas/ ---------
+
+def parse_beside(source: Path) -> etree._ElementTree:
+    """``source`` parsed, its include, redefine and import locations made to work one directory down."""
+    tree = etree.parse(str(source), etree.XMLParser(remove_blank_text=True))
+    for location in tree.getroot().iter(Q + "include", Q + "redefine", Q + "import"):
+        location.set("schemaLocation", "../" + location.get("schemaLocation"))
+    return tree
+
+
+def finish(tree: etree._ElementTree, notice: str) -> bytes:
+    """The derived schema's bytes, with ``notice`` as its first comment."""
+    tree.getroot().insert(0, etree.Comment(notice))
     etree.indent(tree, space="  ")
     return etree.tostring(tree, xml_declaration=True, encoding="UTF-8") + b"\n"
 
 
-def stale(directory: Path = SCHEMAS) -> list[str]:
+def stale(directory: Path = SCHEMAS, out: str = OUT.name, sources: tuple[str, ...] = SOURCES,
+          derive_one: Callable[[Path], bytes] = derive) -> list[str]:
     """The derived files that differ from what this script writes now."""
-    return [name for name in SOURCES
-            if not (directory / "xsd10" / name).is_file()
-            or (directory / "xsd10" / name).read_bytes() != derive(directory / name)]
+    return [name for name in sources
+            if not (directory / out / name).is_file()
+            or (directory / out / name).read_bytes() != derive_one(directory / name)]
 
 
-def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main(description: str = __doc__, out: str = OUT.name, sources: tuple[str, ...] = SOURCES,
+         derive_one: Callable[[Path], bytes] = derive, script: str = Path(__file__).name) -> int:
+    parser = argparse.ArgumentParser(description=description.splitlines()[0])
     parser.add_argument("--check", action="store_true", help="only report stale files (exit 1)")
     if parser.parse_args().check:
-        names = stale()
+        names = stale(SCHEMAS, out, sources, derive_one)
         for name in names:
-            print(f"schemas/xsd10/{name} is stale: run python schemas/derive_xsd10.py", file=sys.stderr)
+            print(f"schemas/{out}/{name} is stale: run python schemas/{script}", file=sys.stderr)
         return 1 if names else 0
-    OUT.mkdir(exist_ok=True)
-    for name in SOURCES:
-        (OUT / name).write_bytes(derive(SCHEMAS / name))
-        print(f"wrote {OUT / name}")
+    (SCHEMAS / out).mkdir(exist_ok=True)
+    for name in sources:
+        (SCHEMAS / out / name).write_bytes(derive_one(SCHEMAS / name))
+        print(f"wrote {SCHEMAS / out / name}")
     return 0
 
 

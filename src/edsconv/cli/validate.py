@@ -17,14 +17,17 @@ from edsconv.xml.validate import SCHEMA_CHOICES, validate_file
 @click.argument("files", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option("--schema", "schema_name", type=click.Choice(SCHEMA_CHOICES),
               help="Validate against this profile kind or schema file instead of the one the header names.")
+@click.option("--as-printed", "printed", is_flag=True,
+              help="Use the extension points (xsd:any) as the standard prints them: strict, and exactly one "
+                   "element where no bounds are printed (schemas/ERRATA.md, deliberate deviations).")
 @click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def validate_command(files: tuple[Path, ...], schema_name: str | None, output_format: str) -> int:
+def validate_command(files: tuple[Path, ...], schema_name: str | None, printed: bool, output_format: str) -> int:
     """Validate ISO 15745-4 XML profiles (EtherNet/IP, EDS wrappers, ADS-net, FL-net) against their schemas."""
     forced = kind_named(schema_name) if schema_name else None
     reports = []
     for path in files:
         with reading(path):
-            reports.append(validate_file(path, forced))
+            reports.append(validate_file(path, forced, printed))
     if output_format == "json":
         sys.stdout.write(format_json(reports))
     else:

@@ -13,7 +13,7 @@ xmlschema. The restored schemas loaded by xmlschema stay the reference for
 
 Building an xmlschema schema object costs 0.05-0.3 s, so built schemas are also pickled to
 a per-user disk cache (:mod:`edsconv.cache`) and later processes unpickle them
-(~0.04 s). The cache key hashes every ``.xsd`` file, the schemas directory, the
+(~0.04 s). The cache key hashes every ``.xsd`` file (the as-printed variants too), the schemas directory, the
 xmlschema version and the Python version; any trouble with the cache falls back
 to building the schema.
 """
@@ -24,7 +24,7 @@ import functools
 import hashlib
 import pickle
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -69,6 +69,19 @@ _BY_XSD = {kind.xsd: kind for kind in PROFILE_KINDS if kind.xsd}
 def kind_named(name: str) -> ProfileKind:
     """Look a kind up by identifier or by schema file name (``KeyError`` if neither)."""
     return _BY_NAME.get(name) or _BY_XSD[name]
+
+
+#: Directory (in ``schemas/``) of the as-printed variants (``schemas/derive_as_printed.py``).
+AS_PRINTED = "as_printed"
+
+
+def as_printed(kind: ProfileKind) -> ProfileKind:
+    """``kind`` validated against the wildcards as the standard prints them: the variant of its
+    schema without the deviations wildcard-lax and wildcard-bounds of ERRATA.md, for the schemas
+    that have wildcards; ``kind`` itself otherwise (its schema is as printed, once repaired)."""
+    if kind.xsd is None or not (data_dir("schemas") / AS_PRINTED / kind.xsd).is_file():
+        return kind
+    return replace(kind, xsd=f"{AS_PRINTED}/{kind.xsd}")
 
 
 def write_validator_path(xsd: str) -> Path:
@@ -116,7 +129,8 @@ def build_schema(xsd: str) -> xmlschema.XMLSchemaBase:
 def _schema_class(xsd: str) -> type[xmlschema.XMLSchemaBase]:
     import xmlschema
 
-    return xmlschema.XMLSchema11 if _BY_XSD[xsd].xsd_version == "1.1" else xmlschema.XMLSchema10
+    # an as-printed variant ("as_printed/X.xsd") is read as its restored schema X.xsd is
+    return xmlschema.XMLSchema11 if _BY_XSD[Path(xsd).name].xsd_version == "1.1" else xmlschema.XMLSchema10
 
 
 # Bump when the pickled content or the build options change.
@@ -130,8 +144,8 @@ def schema_cache_file(xsd: str, xmlschema_version: str) -> Path | None:
     for part in (_CACHE_FORMAT, sys.version, xmlschema_version, str(schemas), xsd):
         digest.update(part.encode() + b"\0")
     try:
-        for path in sorted(schemas.glob("*.xsd")):
-            digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+        for path in sorted(schemas.glob("*.xsd")) + sorted((schemas / AS_PRINTED).glob("*.xsd")):
+            digest.update(path.relative_to(schemas).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
     except OSError:
         return None
     return cache_dir() / f"{Path(xsd).stem}-{digest.hexdigest()[:24]}.pickle"

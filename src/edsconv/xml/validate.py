@@ -17,7 +17,7 @@ from lxml import etree
 
 from edsconv.diagnostics import Diagnostic, Severity, block, rule
 from edsconv.xml.safe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
-from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, kind_named, load_schema
+from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, as_printed, kind_named, load_schema
 
 NOT_WELL_FORMED = rule(
     "XML001", Severity.ERROR, "XML 1.0", "The file is not well-formed XML",
@@ -164,13 +164,17 @@ def detect_kind(root: etree._Element) -> ProfileKind | None:
     return kind_named(name) if name else None
 
 
-def validate_file(path: Path, forced: ProfileKind | None = None) -> FileReport:
+def validate_file(path: Path, forced: ProfileKind | None = None, printed: bool = False) -> FileReport:
     """Validate one file; ``OSError`` propagates when it cannot be read."""
-    return read_and_validate(path, forced)[1]
+    return read_and_validate(path, forced, printed)[1]
 
 
-def read_and_validate(path: Path, forced: ProfileKind | None = None) -> tuple[XmlDocument | None, FileReport]:
-    """The safely parsed document (None when it is not well-formed or unsafe) and its report."""
+def read_and_validate(path: Path, forced: ProfileKind | None = None,
+                      printed: bool = False) -> tuple[XmlDocument | None, FileReport]:
+    """The safely parsed document (None when it is not well-formed or unsafe) and its report.
+
+    ``printed``: validate against the wildcards as the standard prints them
+    (:func:`~edsconv.xml.schemas.as_printed`) instead of the restored schema."""
     report = FileReport(str(path), forced)
     try:
         document = read_xml(path)
@@ -180,6 +184,8 @@ def read_and_validate(path: Path, forced: ProfileKind | None = None) -> tuple[Xm
         return None, report
     root = document.tree.getroot()
     report.kind = forced or detect_kind(root)
+    if printed and report.kind is not None:
+        report.kind = as_printed(report.kind)
     if report.kind is None:
         found = (f"ProfileClassID {_header_text(root, 'ProfileHeader', 'ProfileClassID')!r}, ProfileTechnology "
                  f"{_header_text(root, 'ProfileHeader', 'ISO15745Reference', 'ProfileTechnology')!r}")

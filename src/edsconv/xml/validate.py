@@ -16,6 +16,7 @@ from typing import cast
 from lxml import etree
 
 from edsconv.diagnostics import Diagnostic, Severity, block, rule
+from edsconv.xml.datamodel import without_comments
 from edsconv.xml.safe import UnsafeXmlError, XmlDocument, XmlError, XmlSyntaxError, XmlTooLargeError, read_xml
 from edsconv.xml.schemas import PROFILE_KINDS, ProfileKind, as_printed, kind_named, load_schema
 
@@ -146,9 +147,11 @@ class FileReport:
 
 
 def _header_text(root: etree._Element, *steps: str) -> str:
-    query = "./" + "/".join(f"*[local-name()='{step}']" for step in steps) + "/text()"
+    """The header value at ``steps``: its whole text, comments and processing instructions
+    skipped, white space collapsed (both header values are tokens to compare)."""
+    query = "normalize-space(./" + "/".join(f"*[local-name()='{step}']" for step in steps) + ")"
     found = root.xpath(query)
-    return found[0].strip() if isinstance(found, list) and found and isinstance(found[0], str) else ""
+    return found if isinstance(found, str) else ""
 
 
 def detect_kind(root: etree._Element) -> ProfileKind | None:
@@ -171,7 +174,8 @@ def validate_file(path: Path, forced: ProfileKind | None = None, printed: bool =
 
 def read_and_validate(path: Path, forced: ProfileKind | None = None,
                       printed: bool = False) -> tuple[XmlDocument | None, FileReport]:
-    """The safely parsed document (None when it is not well-formed or unsafe) and its report.
+    """The safely parsed document (None when it is not well-formed or unsafe; comments and
+    processing instructions removed, :func:`~edsconv.xml.datamodel.without_comments`) and its report.
 
     ``printed``: validate against the wildcards as the standard prints them
     (:func:`~edsconv.xml.schemas.as_printed`) instead of the restored schema."""
@@ -182,6 +186,8 @@ def read_and_validate(path: Path, forced: ProfileKind | None = None,
         report.diagnostics.append(Diagnostic.of(_XML_ERROR_RULES[type(error)], error.message,
                                                 error.line, error.column, report.path))
         return None, report
+    # validation sees the data model: comments and processing instructions are not content
+    document = without_comments(document)
     root = document.tree.getroot()
     report.kind = forced or detect_kind(root)
     if printed and report.kind is not None:

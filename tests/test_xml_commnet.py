@@ -267,3 +267,19 @@ def test_unreadable_values_are_diagnosed():
     assert [d.code for d in diagnostics] == ["EDS109", "EDS101"]
     assert "Connection1 Path" in diagnostics[0].message and "'XYZ'" in diagnostics[0].message
     assert again.connections["Connection1"].path is None
+
+
+def test_a_repeated_connection_id_is_diagnosed_and_the_first_kept():
+    """Connection ids are xsd:IDs, unique among the schema's elements; an edsconv:Connection (an
+    extension element, written for keywords beyond the id pattern) is not checked by the schema."""
+    device = edsconv.build(edsconv.parse(EDGE))
+    root = etree.fromstring(profile(device))
+    descriptions = root.find(".//ConnectionDescriptions")
+    first = descriptions.find("Connection")
+    again = etree.SubElement(descriptions, EDSCONV + "Connection", id=first.get("id"))
+    etree.SubElement(again, EDSCONV + "Name_String").text = "second"
+    read = Device()
+    diagnostics = read_commnet_profile(root, read)
+    assert [d.code for d in diagnostics] == ["EDS009"]
+    assert f"id {first.get('id')!r} repeats" in diagnostics[0].message
+    assert read.connections[first.get("id")] == device.connections[first.get("id")]

@@ -213,7 +213,7 @@ def test_reads_a_profile_written_elsewhere():
     assert device.modular.racks[0].legal_slots == (1, 2) and device.modular.query.id_size == 2
     assert [m.reference for m in device.assemblies["Assem100"].members] == \
         [Reference("Param1", "Param", 1), None, None]
-    assert device.groups[0].members == [Reference("Param1", "Param", 1), Reference("ProxyParam1", "ProxyParam", 1)]
+    assert device.groups[0].members == [Reference("Param1", "Param", 1), Reference("Param1", "Param", 1)]
 
 
 def test_unreadable_values_are_reported():

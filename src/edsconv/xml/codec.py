@@ -46,6 +46,7 @@ from edsconv.model import (
 )
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.common import EDSCONV, is_xml_text, xml_text
+from edsconv.xml.datamodel import string_value
 
 
 def float_text(value: float) -> str:
@@ -76,7 +77,7 @@ def set_text(element, text: str) -> None:
 
 
 def get_text(element) -> str:
-    text = element.text or ""
+    text = string_value(element)
     return json.loads(text) if element.get("escaped") == "json" else text
 
 
@@ -210,7 +211,8 @@ def encode(element, value) -> None:
 
 def decode(element):
     kind = element.get("kind")
-    text = element.text or ""
+    # the text of a scalar, comments and processing instructions skipped; containers have none
+    text = "" if kind in ("list", "tuple", "dict", "object") else string_value(element)
     values = [child for child in element if child.tag == EDSCONV + "Value"]
     match kind:
         case "none":

@@ -33,6 +33,7 @@ from lxml import etree
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
+from edsconv.eds.reader_rules import DUPLICATE_ENTRY
 from edsconv.model import MODULE, Connection, Device, Port, Reference
 from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, PathItem, ValueProblem, path_items
 from edsconv.xml.common import (
@@ -44,6 +45,7 @@ from edsconv.xml.common import (
     is_xml_text,
     xml_text,
 )
+from edsconv.xml.datamodel import collapse, string_value, token
 from edsconv.xml.safe import XmlDocument
 
 #: Connection families in the order the schema's ConnectionDescriptions sequence wants them.
@@ -312,11 +314,6 @@ def commnet_profile(device: Device, header: Header) -> etree._Element:
 
 # --- reading -------------------------------------------------------------------------------
 
-def _all_text(element: etree._Element) -> str:
-    """The text of an element and its descendants (lxml yields str; its stubs say str or bytes)."""
-    return "".join(str(part) for part in element.itertext())
-
-
 class _Reader:
     def __init__(self, device: Device, document: XmlDocument) -> None:
         self.device = device
@@ -336,7 +333,7 @@ class _Reader:
         return found
 
     def number_or_reference(self, text: str) -> int | Reference:
-        text = text.strip()
+        text = collapse(text)
         return int(text) if text.isascii() and text.isdigit() else self.reference(text)
 
     @staticmethod
@@ -344,20 +341,20 @@ class _Reader:
         return path_items(text)
 
     def field_value(self, field: _Field, element: etree._Element) -> Any:
-        text = _all_text(element)
+        text = string_value(element)
         if field.kind == "text":
             return text
         if field.kind == "path":
             return self.path(text)
         if field.kind == "dword":
-            text = "".join(text.split())
+            text = collapse(text)
             if not re.fullmatch(r"(?:[0-9A-Fa-f]{2}){0,4}", text):
                 raise ValueProblem(WRONG_KIND, f"{text!r} is not a DWORD in hexBinary (at most 8 hexadecimal digits)")
             return int(text, 16) if text else None
         return self.number_or_reference(text)
 
     def extension_value(self, field: _Field | None, element: etree._Element) -> Any:
-        text = _all_text(element)
+        text = string_value(element)
         if element.get("escaped") == "true":
             text = _unescape(text)
         if field is None or field.kind == "text" or element.get("type") == "string":
@@ -369,9 +366,7 @@ class _Reader:
     # connections
     def connection(self, element: etree._Element, family: str, keyword: str, number: int) -> Connection:
         connection = Connection(keyword, family, number)
-        for child in element:
-            if not isinstance(child.tag, str):
-                continue
+        for child in element.iterchildren(etree.Element):
             try:
                 if child.tag in _FIELDS_BY_TAG:
                     field = _FIELDS_BY_TAG[child.tag]
@@ -394,18 +389,22 @@ class _Reader:
         order: list[str] = []
         for child in descriptions:
             if child.tag == EDSCONV + "EntryOrder":
-                order = (child.text or "").split()
+                order = string_value(child).split()
                 continue
             if child.tag not in (*FAMILIES, EDSCONV + "Connection"):
                 continue
-            keyword = child.get("id", "")
+            keyword = collapse(child.get("id", ""))
             match = _ANY_KEYWORD.fullmatch(keyword)
             if match is None or match[1] not in FAMILIES or (child.tag in FAMILIES and child.tag != match[1]):
                 self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a {etree.QName(child).localname}N "
                                          "keyword"), child)
                 continue
-            if keyword not in found:
-                found[keyword] = self.connection(child, match[1], keyword, int(match[2]))
+            if keyword in found:  # ids are unique among the schema's elements; an edsconv:Connection may repeat one
+                self.diagnostics.append(self.document.diagnostic(
+                    DUPLICATE_ENTRY, f"{_describe(child)}: id {keyword!r} repeats an earlier connection; the first "
+                    "is kept", child))
+                continue
+            found[keyword] = self.connection(child, match[1], keyword, int(match[2]))
         for keyword in [k for k in order if k in found] + [k for k in found if k not in order]:
             self.device.connections[keyword] = found[keyword]
 
@@ -422,24 +421,24 @@ class _Reader:
         return values
 
     def port(self, element: etree._Element) -> Port | None:
-        keyword = element.get("id", "")
+        keyword = collapse(element.get("id", ""))
         match = _ANY_KEYWORD.fullmatch(keyword)
         if not match or match[1] != "Port":
             self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a PortN keyword"), element)
             return None
         port = Port(int(match[2]))
-        for child in element:
+        for child in element.iterchildren(etree.Element):
             # an edsconv:Port's children are in its namespace, a Port's in none
             tag = etree.QName(child).localname if child.tag != EDSCONV + "Value" else child.tag
             try:
                 if tag == "PortTypeName":
-                    port.type_name = (child.text or "").strip()
+                    port.type_name = token(child)
                 elif tag == "PortName":
-                    port.name = child.text or ""
+                    port.name = string_value(child)
                 elif tag == "PortObject":
-                    port.object_path = self.path(child.text or "")
+                    port.object_path = self.path(token(child))
                 elif tag == "PortNumber":
-                    text = (child.text or "").strip()
+                    text = token(child)
                     if not (text.isascii() and text.isdigit()) or int(text) > _UINT_MAX:
                         raise ValueProblem(OUT_OF_RANGE, f"{text!r} is not a UINT port number")
                     port.port_number = int(text)

@@ -11,7 +11,6 @@ both directions share are here.
 
 from __future__ import annotations
 
-import datetime
 import re
 
 from lxml import etree
@@ -43,28 +42,31 @@ from edsconv.model.build import iter_references
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.codec import decode, read_comment, read_entries, reference, set_path
 from edsconv.xml.common import EDSCONV
+from edsconv.xml.datamodel import collapse, string_value, token, xsd_date, xsd_time
 from edsconv.xml.safe import XmlDocument
 
 BAD_DEVICE_VALUE = rule(
-    "XML201", Severity.WARNING, "C.2.1.2",
+    "XML201", Severity.ERROR, "C.2.1.2",
     "A device profile element holds a value edsconv cannot read; the model field stays empty",
     explanation="""
         A device profile holds a value edsconv cannot read into the model (for example
-        a DataType that is neither a hexadecimal code nor a path); that field of the
-        model stays empty and the EDS written by xml2eds leaves it out. Profiles that
-        edsconv writes never trigger it.
+        a DataType that is neither a hexadecimal code nor a path, or a group member
+        that names no Param); that field of the model stays empty and the EDS written
+        by xml2eds leaves it out, so xml2eds exits 1: a value is never dropped
+        silently. Profiles that edsconv writes never trigger it.
     """,
     bad="`<DataType>word</DataType>`.",
     good="`<DataType>C7</DataType>`",
 )
 BAD_EXTENSION = rule(
-    "XML202", Severity.WARNING, "edsconv",
+    "XML202", Severity.ERROR, "edsconv",
     "An edsconv extension element of a device profile cannot be read and is ignored",
     clause_note="edsconv extension namespace",
     explanation="""
         An element of edsconv's extension namespace (`urn:x-edsconv:eds-extensions:1`)
         in a device profile cannot be read (hand-edited or from another version) and is
-        ignored; see docs/mapping.md for the elements.
+        ignored, so the EDS written by xml2eds lacks what it held and xml2eds exits 1;
+        see docs/mapping.md for the elements.
     """,
     bad='`<edsconv:Value path="parameters.Param1.default" kind="nonsense">1</edsconv:Value>`',
     good='`<edsconv:Value path="parameters.Param1.default" kind="int">1</edsconv:Value>`',
@@ -160,7 +162,7 @@ class _Reader:
         """``converter(text)`` of ``element`` (None when absent or unreadable)."""
         if element is None:
             return None
-        text = element.text or ""
+        text = string_value(element)
         try:
             return converter(text)
         except (ValueError, KeyError, OverflowError):
@@ -170,7 +172,7 @@ class _Reader:
     def child(self, parent, tag: str, converter=str):
         return self.convert(parent.find(tag) if parent is not None else None, converter)
 
-    def attribute(self, element, name: str, converter):
+    def attribute(self, element, name: str, converter=str):
         text = element.get(name)
         if text is None:
             return None
@@ -182,24 +184,31 @@ class _Reader:
 
 
 def _integer(text: str) -> int:
-    text = text.strip()
+    text = collapse(text)
     if not re.fullmatch(r"[+-]?[0-9]+", text):
         raise ValueError(text)
     return int(text)
 
 
 def _hex_binary(text: str) -> int:
-    return int(text.strip(), 16)
+    text = collapse(text)
+    if not re.fullmatch("[0-9A-Fa-f]+", text):
+        raise ValueError(text)
+    return int(text, 16)
 
 
 def _class_word(text: str) -> int:
-    text = text.strip()
+    text = collapse(text)
     return int(text, 16) if text[:2].lower() == "0x" else _integer(text)
+
+
+def _path(text: str) -> tuple[PathItem, ...]:
+    return path_items(collapse(text))
 
 
 def _data_type_code(text: str) -> int | tuple[PathItem, ...]:
     """A USINT code; a one-byte EPATH (``C7``) is the code in hexadecimal; longer paths stay paths."""
-    text = text.strip()
+    text = collapse(text)
     if re.fullmatch("[0-9]+", text) and int(text) <= 255:
         return int(text)
     path = path_items(text)
@@ -207,11 +216,11 @@ def _data_type_code(text: str) -> int | tuple[PathItem, ...]:
 
 
 def _float(text: str) -> float:
-    return float(text.strip())
+    return float(collapse(text))
 
 
 def _member_reference(text: str):
-    text = text.strip()
+    text = collapse(text)
     if re.fullmatch("[0-9]+", text):
         return int(text)
     found = Reference.parse(text)
@@ -228,7 +237,7 @@ def _stringi(text: str) -> tuple[StringIMember, ...]:
 
 
 def _id_number(element, prefix: str) -> int | None:
-    match = re.fullmatch(prefix + "([0-9]+)", element.get("id", ""))
+    match = re.fullmatch(prefix + "([0-9]+)", collapse(element.get("id", "")))
     return int(match.group(1)) if match else None
 
 
@@ -264,14 +273,14 @@ def read_schema_part(body: etree._Element, device: Device, reader: _Reader | Non
 
 def _read_file(reader: _Reader, body) -> FileDescription:
     def revision(text: str) -> Revision:
-        major, minor = text.split(".")
+        major, minor = collapse(text).split(".")
         return Revision(int(major), int(minor))
 
     get = reader.attribute
     return FileDescription(
-        body.get("DescText"), get(body, "CreateDate", datetime.date.fromisoformat),
-        get(body, "CreateTime", datetime.time.fromisoformat), get(body, "ModDate", datetime.date.fromisoformat),
-        get(body, "ModTime", datetime.time.fromisoformat), get(body, "Revision", revision), body.get("HomeURL"))
+        body.get("DescText"), get(body, "CreateDate", xsd_date), get(body, "CreateTime", xsd_time),
+        get(body, "ModDate", xsd_date), get(body, "ModTime", xsd_time), get(body, "Revision", revision),
+        get(body, "HomeURL", collapse))
 
 
 def _read_identity(reader: _Reader, attributes) -> tuple[Identity, list[Classification]]:
@@ -288,8 +297,9 @@ def _read_identity(reader: _Reader, attributes) -> tuple[Identity, list[Classifi
     for element in attributes.findall("DeviceClassification/Class"):
         number = _id_number(element, "Class")
         if number is not None:
-            classifications.append(Classification(number, child(element, "MainClass"),
-                                                   tuple(s.text or "" for s in element.findall("SubClass"))))
+            subclasses = (reader.convert(s, collapse) for s in element.findall("SubClass"))
+            classifications.append(Classification(number, child(element, "MainClass", collapse),
+                                                   tuple(s for s in subclasses if s is not None)))
     return identity, classifications
 
 
@@ -308,13 +318,13 @@ def _read_modular(reader: _Reader, element) -> Modular:
                 key = [child(rack, tag, _integer) for tag in ("VendCode", "ProdType", "ProdCode", "MajRev", "MinRev")]
                 modular.racks.append(Rack(number, key[0], key[1], key[2], key[3], key[4],
                                           tuple(reader.convert(s, _integer) for s in rack.findall("LegalSlot"))))
-        modular.external_id = child(module, "ExternalID", path_items)
-        modular.generic_id = child(module, "GenericID", path_items)
-        modular.extern_id_exact_match = child(module, "ExternIDExactMatch")
+        modular.external_id = child(module, "ExternalID", _path)
+        modular.generic_id = child(module, "GenericID", _path)
+        modular.extern_id_exact_match = child(module, "ExternIDExactMatch", collapse)
         query = module.find("Query")
         if query is not None:
-            modular.query = Query(child(query, "Path", path_items), child(query, "Service", _integer),
-                                  child(query, "Size", _integer), child(query, "ExternalID", path_items))
+            modular.query = Query(child(query, "Path", _path), child(query, "Service", _integer),
+                                  child(query, "Size", _integer), child(query, "ExternalID", _path))
     return modular
 
 
@@ -324,7 +334,7 @@ def _read_parameter(reader: _Reader, element) -> Parameter:
     child = reader.child
     item = Parameter(f"{family}{number}", family, number)
     item.link_path_size = child(element, "LinkPathSize", _integer)
-    item.link_path = child(element, "LinkPath", path_items)
+    item.link_path = child(element, "LinkPath", _path)
     item.descriptor = child(element, "ParamDescriptor", _hex_binary)
     item.data_type_code = child(element, "DataType", _data_type_code)
     if isinstance(item.data_type_code, int):
@@ -334,7 +344,7 @@ def _read_parameter(reader: _Reader, element) -> Parameter:
     item.name, item.units, item.help = (child(element, tag) for tag in ("ParameterName", "UnitsString", "HelpString"))
     for tag, attribute in VALUE_TAGS:
         value_element = element.find(tag)
-        if family == "ProxyParam" and value_element is not None and value_element.text == MODULE:
+        if family == "ProxyParam" and value_element is not None and token(value_element) == MODULE:
             setattr(item, attribute, MODULE)  # C.4.1.5.3.1: taken from the ProxiedParam
         else:
             setattr(item, attribute, reader.convert(value_element, _value_reader(item, attribute)))
@@ -345,7 +355,7 @@ def _read_parameter(reader: _Reader, element) -> Parameter:
     if enum is not None:
         keys = [reader.convert(e, _integer) for e in enum.findall("EnumValue")]
         names = enum.findall("EnumName")
-        item.enum = {key: e.text or "" for key, e in zip(keys, names, strict=False) if key is not None}
+        item.enum = {key: string_value(e) for key, e in zip(keys, names, strict=False) if key is not None}
     adder = element.find("ProxyParamSizeAdder")
     if adder is not None:
         item.size_adder = tuple(child(adder, tag, _value_reader(item, attribute))
@@ -366,7 +376,7 @@ def _read_assembly(reader: _Reader, element) -> Assembly:
     number = _id_number(element, family) or 0
     child = reader.child
     item = Assembly(f"{family}{number}", family, number, child(element, "AssemblyName"),
-                    child(element, "AssemblyPath", path_items), child(element, "AssemblyDataSize", _integer),
+                    child(element, "AssemblyPath", _path), child(element, "AssemblyDataSize", _integer),
                     child(element, "AssemblyDescriptor", _hex_binary))
     for member in element.findall("AssemblyMember"):
         size = child(member, "MemberSize", _integer)
@@ -387,7 +397,13 @@ def _read_group(reader: _Reader, element) -> ParameterGroup:
                 members.append(Reference(f"Param{number}", "Param", number))
         elif member.tag == "VariantRef":
             target = reader.convert(member, reference)
-            if target is not None:
+            if target is not None and (target.family != "Param" or target.bit is not None):
+                # an EDS group lists parameter instance numbers, which read back as ParamN:
+                # ProxyParam1 written as 1 would name Param1, another entry
+                reader.report(BAD_DEVICE_VALUE, member, f"VariantRef {target.text!r}: an EDS group member is a "
+                              "parameter instance number naming a ParamN entry (C.4.1.4.7, Table C.19); "
+                              f"{target.text} has none and is left out")
+            elif target is not None:
                 members.append(target)
     return ParameterGroup(_id_number(element, "Group") or 0, reader.child(element, "NameString"),
                           reader.child(element, "NumberOfMembers", _integer), members)

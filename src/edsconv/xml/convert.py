@@ -13,6 +13,7 @@ next to it.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -21,6 +22,7 @@ from lxml import etree
 from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
 from edsconv.model import Device
 from edsconv.xml.common import Header, header_element, serialise
+from edsconv.xml.datamodel import collapse, string_value
 
 WRAPPER_NOT_FOUND = rule(
     "XML101", Severity.ERROR, "C.2.2.1", "The EDS a wrapper profile references is not next to it",
@@ -111,9 +113,43 @@ def header_for(device: Device, fallback: str, overrides: dict) -> Header:
 # --- xml2eds -----------------------------------------------------------------------------
 
 def _handle_values(root: etree._Element) -> tuple[str, dict[str, str]]:
+    """The WrapperReference (an NMTOKEN: white space collapsed; FILEINFO by default) and the
+    handle's values by element name (each its whole text, comments skipped)."""
     handle = root.find("ProfileBody/ExternalProfileHandle")
-    values = {child.tag: (child.text or "").strip() for child in handle} if handle is not None else {}
-    return (handle.get("WrapperReference", "FILEINFO") if handle is not None else "FILEINFO"), values
+    if handle is None:
+        return "FILEINFO", {}
+    values = {str(child.tag): string_value(child) for child in handle.iterchildren(etree.Element)}
+    return collapse(handle.get("WrapperReference", "FILEINFO")), values
+
+
+def _numbers(text: str, separator: str) -> tuple[int, ...] | None:
+    """The decimal (or 0x hexadecimal) numbers of ``text`` split at ``separator``, None when a
+    part is no number."""
+    parts = re.split(separator, collapse(text))
+    if not all(_NUMBER.fullmatch(part) for part in parts):
+        return None
+    return tuple(int(part, 0) if part[:2].lower() == "0x" else int(part) for part in parts)
+
+
+#: Table C.2 writes DEVICEINFO's ProfileIdentification as "VendorID, Device Type, Product Code"
+#: without a spelling: the numbers separated by spaces (as eds2xml writes them), by commas (as the
+#: table lists them) or by hyphens (as edsconv spells a ProfileIdentification), with spaces around.
+_KEY_SEPARATOR = r"\s*[,-]\s*|\s+"
+_NUMBER = re.compile("0[xX][0-9A-Fa-f]+|[0-9]+")
+
+
+def _wrapped_by(device: Device, reference: str, identification: str, revision: str) -> bool:
+    """Whether ``device`` is the EDS a wrapper's handle names (Table C.2). Strings compare with
+    their white space collapsed; numbers and revisions by value (``1.02`` is ``1.2``)."""
+    written = _numbers(revision, r"\.")
+    if reference == "FILEINFO":
+        found = device.file.revision
+        return (collapse(device.file.description or "") == collapse(identification)
+                and (written == (found.major, found.minor) if found else written is None and not revision.strip()))
+    identity = device.identity
+    return (_numbers(identification, _KEY_SEPARATOR) ==
+            (identity.vendor_code, identity.product_type, identity.product_code)
+            and written == (identity.major_revision, identity.minor_revision))
 
 
 def find_wrapped_eds(xml_path: Path, root: etree._Element) -> tuple[Path | None, str]:
@@ -123,7 +159,7 @@ def find_wrapped_eds(xml_path: Path, root: etree._Element) -> tuple[Path | None,
     reference, values = _handle_values(root)
     identification = values.get("ProfileIdentification", "")
     revision = values.get("ProfileRevision", "")
-    location = values.get("ProfileLocation", "")
+    location = collapse(values.get("ProfileLocation", ""))
     described = f"{reference}: identification {identification!r}, revision {revision!r}" + (
         f", location {location!r}" if location else "")
     candidates = sorted(p for p in xml_path.parent.iterdir() if p.suffix.lower() == ".eds")
@@ -132,14 +168,7 @@ def find_wrapped_eds(xml_path: Path, root: etree._Element) -> tuple[Path | None,
         if named.is_file():
             return named, described
     for candidate in candidates:
-        device = build(load(candidate))
-        if reference == "FILEINFO":
-            matches = (device.file.description == identification and str(device.file.revision or "") == revision)
-        else:
-            identity = device.identity
-            key = " ".join(str(v) for v in (identity.vendor_code, identity.product_type, identity.product_code))
-            matches = key == identification and f"{identity.major_revision}.{identity.minor_revision}" == revision
-        if matches:
+        if _wrapped_by(build(load(candidate)), reference, identification, revision):
             return candidate, described
     return None, described
 

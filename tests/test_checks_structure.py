@@ -153,6 +153,24 @@ def test_forward_reference_is_reported_once_per_pair_of_sections():
     assert [found for found in structure(text) if found[0] == "EDS204"] == [at("EDS204", text, "Assem2, , 2")]
 
 
+def test_forward_reference_through_a_connection_path():
+    param = 'Param1 = 0, , , 0x0000, 0xC6, 1, "Slot", "", "", 0, 10, 1;'
+    connection = CONNECTION.replace("2C 01", "2C [Param1]")
+    text = eds({"Assembly": ASSEMBLY, "Connection Manager": connection, "Params": param})
+    assert [found for found in structure(text) if found[0] == "EDS204"] == [at("EDS204", text, '"20 04')]
+    placed = eds({"Params": param, "Assembly": ASSEMBLY, "Connection Manager": connection})
+    assert "EDS204" not in [found for found, _, _ in structure(placed)]
+
+
+def test_numbering_cites_the_clause_of_its_family():
+    def clauses(text: str) -> list[str]:
+        return [d.clause for d in edsconv.analyse(edsconv.parse(text))[1] if d.code == "EDS213"]
+
+    assert clauses(eds({"Groups": 'Group2 = "G", 0;'})) == ["C.4.1.4.7"]
+    assert clauses(eds({"Device Classification": "Class1 = EtherNetIP;\nClass3 = 65535_Tool;"})) == ["C.4.1.4.4"]
+    assert clauses(eds({"Modular": "Width = 1;\nRack2 = 65535,12,1,1,1,,,,1;"})) == ["C.4.1.5.2.3"]
+
+
 @pytest.mark.parametrize("text", [
     eds({"Device Classification": "Class1 = ;"}),
     eds({"Device Classification": "Class1 = {EtherNetIP, 1};"}),

@@ -171,6 +171,26 @@ def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
+def _reference_places(ctx: Context) -> Iterator[tuple[Entry, int, str, Entry]]:
+    """(entry, 0-based field, what it names, the entry named) of every resolved reference, those
+    inside connection paths included."""
+    for reference in iter_references(ctx.device):
+        target_entry = getattr(reference.target, "entry", None)
+        if reference.entry is not None and target_entry is not None:
+            yield reference.entry, reference.field_index, str(reference), target_entry
+    for connection in ctx.device.connections.values():
+        if connection.entry is None or not isinstance(connection.path, tuple):
+            continue
+        for item in connection.path:
+            target_entry = getattr(ctx.device.resolve(item.reference), "entry", None) if item.reference else None
+            if target_entry is not None:
+                yield connection.entry, _CONNECTION_PATH_FIELD, f"{item} in its path", target_entry
+
+
+#: 0-based index of the Path field of a ConnectionN (Table C.22 field 15).
+_CONNECTION_PATH_FIELD = 14
+
+
 @check(FORWARD_REFERENCE)
 def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.2.1: sections may be in any order "provided that no forward references exist".
@@ -181,18 +201,14 @@ def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     section_of = {id(entry): (index, section) for index, section in enumerate(ctx.eds.sections)
                   for entry in section.entries}
     reported: set[tuple[int, int]] = set()
-    for reference in iter_references(ctx.device):
-        target_entry = getattr(reference.target, "entry", None)
-        if reference.entry is None or target_entry is None:
-            continue
-        source = section_of.get(id(reference.entry))
+    for entry, field_index, named, target_entry in _reference_places(ctx):
+        source = section_of.get(id(entry))
         target = section_of.get(id(target_entry))
         if source is None or target is None or target[0] <= source[0] or (source[0], target[0]) in reported:
             continue
         reported.add((source[0], target[0]))
-        fields = reference.entry.fields
-        node = fields[reference.field_index] if reference.field_index < len(fields) else reference.entry
-        yield ctx.at(FORWARD_REFERENCE, f"{reference.entry.keyword} in [{source[1].name}] refers to {reference} "
+        node = entry.fields[field_index] if field_index < len(entry.fields) else entry
+        yield ctx.at(FORWARD_REFERENCE, f"{entry.keyword} in [{source[1].name}] refers to {named} "
                                         f"of [{target[1].name}], which comes later (line {target_entry.line}); "
                                         f"place [{target[1].name}] before [{source[1].name}]", node)
 
@@ -264,8 +280,8 @@ def numbering(ctx: Context) -> Iterator[Diagnostic]:
                 if number != expected:
                     entry = entries[number]
                     yield ctx.at(NUMBERING, f"{entry.keyword} comes where {spec.keyword}{expected} is expected: "
-                                            f"{spec.keyword}N entries are numbered from 1 without gaps "
-                                            f"({spec.clause})", entry)
+                                            f"{spec.keyword}N entries are numbered from 1 without gaps",
+                         entry, clause=spec.clause)
                 expected = number + 1
 
 

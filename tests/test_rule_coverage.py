@@ -223,7 +223,9 @@ VALUE_CASES = {
                "[Params]\n" + PARAM.format(type="0xC7", size=2, values="0,100,0")),
     "EDS113": ("[Params]\n" + PARAM.format(type="0xEE", size=2, values="0,100,0"),
                "[Params]\n" + PARAM.format(type="0xC7", size=2, values="0,100,0")),
-    "EDS114": ("[File]\nCreateDate = 06-6-2001;", "[File]\nCreateDate = 06-06-2001;"),
+    "EDS114": ("[File]\nCreateDate = 01-01-1994;", "[File]\nCreateDate = 01-01-1996;"),
+    "EDS116": ('[Device]\nProdName = "Probe\x01Adapter";', '[Device]\nProdName = "Probe\\x01Adapter";'),
+    "EDS117": ('[Device]\nProdName = "Probe Adapter\\x00";', '[Device]\nProdName = "Probe\\x00Adapter";'),
     "EDS115": ("[File]\nRevision = 2.11;", "[File]\nRevision = 2.1;"),
 }
 

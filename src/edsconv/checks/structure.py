@@ -47,6 +47,7 @@ from edsconv.checks.structure_rules import (
 from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.eds.syntax import Entry, Field, Scalar, Section, String
 from edsconv.model.build import iter_references
+from edsconv.model.values import CONTROL_CHARACTER, NULL_TERMINATOR, string_flaw
 
 REQUIRED, RESERVED = tables.Presence.REQUIRED, tables.Presence.RESERVED
 
@@ -359,6 +360,17 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
     vendor = " or a VendorID_keyword" if field_spec.vendor_keywords else ""
     return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {word!r}; allowed: "
                                 f"{allowed}{vendor}", item)
+
+
+@check(CONTROL_CHARACTER, NULL_TERMINATOR)
+def string_characters(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.3.2 and C.4.1.3.3.1: no control characters and no null terminator, in every string of the file."""
+    for section in ctx.eds.sections:
+        for entry in section.entries:
+            for item in entry.walk_fields():
+                flaw = string_flaw(item.value) if isinstance(item.value, String) else None
+                if flaw is not None:
+                    yield ctx.at(flaw[0], f"{entry.keyword}: {flaw[1]}", item)
 
 
 # --- classification, identity, file description ---------------------------------------

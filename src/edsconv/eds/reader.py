@@ -20,7 +20,7 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
 from edsconv.diagnostics import Diagnostic
-from edsconv.eds.lexicon import grammar_text, lexicon
+from edsconv.eds.lexicon import grammar_text, lexicon, undefined_escapes
 from edsconv.eds.reader_rules import (
     BAD_ESCAPE,
     CANOPEN_EDS,
@@ -278,14 +278,13 @@ class _Builder(Transformer):
         return String(tuple(parts))
 
     def check_escapes(self, raw: str, offset: int, unicode: bool) -> None:
-        for escape in re.finditer(r"\\.", raw):
-            at = offset + escape.start()
-            if not self.lexicon.escape.match(raw, escape.start()):
-                self.report(BAD_ESCAPE, f"escape sequence {escape.group()!r} is not defined in Table C.4; the "
-                            "string is rejected (write '\\\\' for a backslash)", at)
-            elif escape.group() == "\\u" and not unicode:
+        for at, sequence, defined in undefined_escapes(raw, unicode):
+            if not defined:
+                self.report(BAD_ESCAPE, f"escape sequence {sequence!r} is not defined in Table C.4; the "
+                            "string is rejected (write '\\\\' for a backslash)", offset + at)
+            else:
                 self.report(UNICODE_ESCAPE_IN_ASCII, "\\u escapes are valid only in L\"...\" (UNICODE) "
-                            "strings", at)
+                            "strings", offset + at)
 
     # --- after the parse -----------------------------------------------------------
     def attach_comments(self) -> None:

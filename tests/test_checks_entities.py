@@ -146,10 +146,49 @@ def test_undefined_path_parameter_and_slot_display_rule():
     assert any("[Param7]" in m for m in messages) and any("Param8" in m for m in messages)
 
 
+def test_undefined_references_cite_the_clause_of_their_field():
+    text = eds(assembly=['Assem100 = "In","",4,,,,32,Param9;'],
+               connections=[connection(rpi="Param8").replace("2C 64", "2C [Param7]")],
+               modular=["DefineSlotsInRack = 4;", "SlotDisplayRule = Param6;"])
+    _, diagnostics = edsconv.analyse(edsconv.parse(text))
+    cited = {d.message.split(",")[0][-30:]: d.clause for d in diagnostics if d.code == "EDS301"}
+    assert sorted(cited.values()) == ["C.4.1.4.8", "C.4.1.4.9.13", "C.4.1.4.9.4", "C.4.1.5.2.2"], cited
+
+
+def test_a_group_may_list_a_parameter_instance_without_a_paramn():
+    # C.4.1.4.6: not every Parameter object instance needs a ParamN entry; a GroupN lists instances
+    assert found(eds(groups=['Group1 = "Setup", 2, 1, 9;']), "EDS301") == []
+
+
 def test_safety_connection_may_leave_size_and_format_empty():
     # format 5 (CIP Safety in later editions): EDS337 says so, EDS311 stays quiet
     text = eds(connections=[connection(parameters="0x44645505", size="").replace("Assem100,", ",", 1)])
     assert found(text, "EDS311") == [] and found(text, "EDS337")
+
+
+def test_legal_slots_of_another_chassis_are_not_bounded_by_this_one():
+    # Rack1 names product 2 (this file is product 1): its slots are that chassis'
+    text = eds(modular=["DefineSlotsInRack = 4;", "Width = 1;", "Rack1 = 65535,12,2,1,1,,,,7,8;"])
+    assert found(text, "EDS334") == []
+
+
+def test_scaling_multiplier_and_base_may_be_0():
+    # Figure C.5 divides only by the divisor; Figure C.11 sets the scaling bit with 0 in every field
+    assert found(eds(params=[PARAM_RPI, usint("0x0004", scaling=",0,1,0,0")]), "EDS319") == []
+
+
+REAL_PARAM = 'Param3 = 0,,,0x0000,0xCA,4,"Value","","",{minimum},{maximum},{default};'
+
+
+@pytest.mark.parametrize("default", ["QUIET-NAN", "SIGNAL-NAN", "INFINITY", "+INFINITY", "-INFINITY"])
+def test_real_reserved_words_are_no_default_out_of_order(default):
+    text = eds(params=[PARAM_RPI, REAL_PARAM.format(minimum="", maximum="", default=default)])
+    assert found(text, "EDS315") == []
+
+
+def test_an_infinite_default_beyond_a_stated_maximum_is_out_of_order():
+    text = eds(params=[PARAM_RPI, REAL_PARAM.format(minimum="0.0", maximum="100.0", default="INFINITY") + M])
+    assert found(text, "EDS315") == [marked_line(text)]
 
 
 def test_checks_do_not_raise_on_odd_values():

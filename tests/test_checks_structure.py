@@ -106,6 +106,8 @@ CASES = [
     ("EDS218", eds({"Device": MINIMAL["Device"] + "\n1Note = 1;"}), "1Note",
      eds({"Device": MINIMAL["Device"] + "\n1_Note = 1;"})),
     ("EDS218", eds({"2Extra": "Note = 1;"}), "[2Extra]", eds({"2_Extra": "Note = 1;"})),
+    ("EDS218", eds({"2Extra Data": "Note = 1;"}), "[2Extra Data]", eds({"2_Extra Data": "Note = 1;"})),
+    ("EDS217", eds({"0065_Extra Data": "Note = 1;"}), "[0065_Extra Data]", eds({"65_Extra Data": "Note = 1;"})),
     ("EDS219", eds({"Device": MINIMAL["Device"] + '\nIconContents = "AA";'}), "IconContents",
      eds({"Device": MINIMAL["Device"] + '\n65535_IconContents = "AA";'})),
     ("EDS219", eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = Safety;"}), "Safety",

@@ -9,6 +9,7 @@ reported again here.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 
 from edsconv import spec_tables as tables
@@ -62,6 +63,7 @@ from edsconv.model import (
     ConnectionEndpoint,
     Device,
     Parameter,
+    Rack,
     Reference,
 )
 from edsconv.model.build import iter_references
@@ -96,18 +98,37 @@ def _path_references(connection: Connection) -> Iterator[PathItem]:
         yield from (item for item in connection.path if item.reference)
 
 
+def _reference_clause(ref: Reference) -> str:
+    """The clause that says what the field of a reference may name: an assembly member (C.4.1.4.8), a
+    connection field (C.4.1.4.9.4 - .10), the chassis SlotDisplayRule (C.4.1.5.2.2)."""
+    family = tables.split_numbered(ref.entry.keyword)[0] if ref.entry is not None else ""
+    if family in _CONNECTION_FAMILIES and ref.field_index < len(tables.CONNECTION_FIELDS):
+        return tables.CONNECTION_FIELDS[ref.field_index].clause
+    if family == "SlotDisplayRule":
+        return tables.entry_spec("Modular", family).clause
+    return tables.ASSEM_FIELDS[0].clause
+
+
+_CONNECTION_FAMILIES = frozenset(spec.keyword for spec in tables.SECTIONS["Connection Manager"].entries)
+#: C.4.1.4.9.13: the connection path may name Param / ProxyParam entries.
+_PATH_CLAUSE = tables.CONNECTION_FIELDS[14].clause
+
+
 @check(UNDEFINED_REFERENCE)
 def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
+    """Every reference names a defined entry, but a group member: a GroupN lists Parameter object
+    instances, and C.4.1.4.6 lets an instance go without a ParamN entry."""
+    group_members = {id(member) for group in ctx.device.groups for member in group.members}
     for ref in iter_references(ctx.device):
-        if ref.target is None:
+        if ref.target is None and id(ref) not in group_members:
             where = ref.entry.keyword if ref.entry is not None else "a reference"
             yield ctx.at(UNDEFINED_REFERENCE, f"{where} names {ref.keyword}, which is not defined",
-                         _node(ref.entry, ref.field_index))
+                         _node(ref.entry, ref.field_index), clause=_reference_clause(ref))
     for connection in ctx.device.connections.values():
         for item in _path_references(connection):
             if ctx.device.resolve(item.reference) is None:
                 yield ctx.at(UNDEFINED_REFERENCE, f"{connection.keyword}: the path names [{item.reference}], "
-                             "which is not defined", _node(connection.entry, 14))
+                             "which is not defined", _node(connection.entry, 14), clause=_PATH_CLAUSE)
 
 
 #: C.4.1.4.9.4 - .10 and .13: the type a parameter named in a connection field evaluates to.
@@ -303,14 +324,20 @@ def descriptors(ctx: Context) -> Iterator[Diagnostic]:
                                   tables.ASSEM_DESCRIPTOR_BITS, _node(assembly.entry, 3))
 
 
+def _type_bounds(data_type: tables.DataType) -> tuple[object, object]:
+    """The bounds of a data type's values: REAL and LREAL hold -INFINITY and INFINITY too (C.4.1.3.10)."""
+    if data_type.kind == "real":
+        return -math.inf, math.inf
+    return data_type.minimum, data_type.maximum
+
+
 def _bounds(parameter: Parameter) -> tuple[object, object] | None:
     """Effective (minimum, maximum) of a numeric parameter: an absent bound is the
     type's own (Table C.17 note b); None when a bound is unusable."""
-    data_type = parameter.data_type
+    type_minimum, type_maximum = _type_bounds(parameter.data_type)
     entry = parameter.entry
     bounds = []
-    for value, index, type_bound in ((parameter.minimum, 9, data_type.minimum), (parameter.maximum, 10,
-                                                                                  data_type.maximum)):
+    for value, index, type_bound in ((parameter.minimum, 9, type_minimum), (parameter.maximum, 10, type_maximum)):
         if _is_number(value):
             bounds.append(value)
         elif not _written(entry, index) and type_bound is not None:
@@ -342,7 +369,8 @@ def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
         if low > high:
             yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: minimum {low} is greater than maximum {high}",
                          _node(parameter.entry, 9))
-        elif _is_number(parameter.default) and not low <= parameter.default <= high:
+        elif _is_number(parameter.default) and not math.isnan(parameter.default) \
+                and not low <= parameter.default <= high:
             yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: default {parameter.default} is outside {low} to {high}",
                          _node(parameter.entry, 11))
 
@@ -390,12 +418,9 @@ def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not _is_int(parameter.descriptor) or not scaling_bit.extract(parameter.descriptor):
             continue  # Figure C.8 writes 0s for scaling that is not used
-        scaling = parameter.scaling
-        for label, value, index in (("multiplier", scaling.multiplier, 12), ("divisor", scaling.divisor, 13),
-                                    ("base", scaling.base, 14)):
-            if value == 0 and _is_int(value):
-                yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling {label} is 0 but the descriptor says "
-                             "scaling is supported", _node(entry, index))
+        if parameter.scaling.divisor == 0 and _is_int(parameter.scaling.divisor):
+            yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling divisor is 0 but the descriptor says scaling "
+                         "is supported; Figure C.5 divides by it", _node(entry, 13))
 
 
 def _expected_data_size(data_type: tables.DataType) -> int | None:
@@ -578,6 +603,14 @@ def ports(ctx: Context) -> Iterator[Diagnostic]:
                 first_use[port.port_number] = port.number
 
 
+def _names_this_device(rack: Rack, device: Device) -> bool:
+    """True when a RackN's electronic key is the device's own: vendor, type, product code and major
+    revision (C.4.1.4.3: the minor revision shall not be used to match an EDS to a device)."""
+    identity = device.identity
+    return rack.key[:4] == (identity.vendor_code, identity.product_type, identity.product_code,
+                            identity.major_revision)
+
+
 def _modular_entry(device: Device, keyword: str) -> Entry | None:
     section = device.eds.section("Modular") if device.eds is not None else None
     return section.entry(keyword) if section is not None else None
@@ -590,13 +623,16 @@ def modular(ctx: Context) -> Iterator[Diagnostic]:
         return
     slots = modular.define_slots_in_rack
     if _is_int(slots):
-        # A file with both DefineSlotsInRack and RackN describes a chassis with
-        # modules of its own: their legal slots are slots of that chassis.
+        # A file with both DefineSlotsInRack and a RackN naming its own chassis describes
+        # a chassis with modules of its own: their legal slots are slots of that chassis.
         for rack in modular.racks:
+            if not _names_this_device(rack, ctx.device):
+                continue  # another chassis: its slots are its own EDS's matter
             for index, slot in enumerate(rack.legal_slots):
                 if slot >= slots:
                     yield ctx.at(LEGAL_SLOT_OUT_OF_RANGE, f"Rack{rack.number}: legal slot {slot} is beyond the "
-                                 f"{slots} slots (0 to {slots - 1}) of DefineSlotsInRack", _node(rack.entry, 8 + index))
+                                 f"{slots} slots (0 to {slots - 1}) of this chassis (DefineSlotsInRack)",
+                                 _node(rack.entry, 8 + index))
     if modular.width == 0:
         yield ctx.at(WIDTH_ZERO, "Width is 0; a module consumes at least one slot", _modular_entry(ctx.device, "Width"))
     if modular.query is not None:

@@ -14,12 +14,20 @@ UNDEFINED_REFERENCE = rule(
     "EDS301", Severity.ERROR, "C.4.1.4.8",
     "A ParamN, ProxyParamN, AssemN or ProxyAssemN used in the file is not defined",
     import_blocking=True,
+    clause_note="the clause of the field: C.4.1.4.8 assembly members, C.4.1.4.9.4 - C.4.1.4.9.10 connection "
+                "fields, C.4.1.4.9.13 connection paths, C.4.1.5.2.2 SlotDisplayRule",
     explanation="""
-        A reference names an entry the file does not define: an assembly member, a
-        connection RPI/size/format, a group member (`GroupN` lists ParamN numbers), the
-        chassis `SlotDisplayRule`, or a `[ParamN]` / `ProxyParamN` inside a connection
-        path. A tool cannot size or show the data; Rockwell's import refuses an
-        AssemN/ParamN used but not defined.
+        A reference names an entry the file does not define: an assembly member
+        ("a ParamN or ProxyParamN reference from the [Params] section"), a connection
+        RPI/size/format, the chassis `SlotDisplayRule`, or a `[ParamN]` / `ProxyParamN`
+        inside a connection path. The diagnostic cites the clause of its field. A tool
+        cannot size or show the data; Rockwell's import refuses an AssemN/ParamN used
+        but not defined.
+
+        A group member is not reported: a `GroupN` lists Parameter object instance
+        numbers (Table C.19), and C.4.1.4.6 says "it is not required that ALL parameter
+        object instances have a corresponding ParamN entry", so a group may list an
+        instance the EDS does not describe.
     """,
     bad=block("""
         Assem100 = "In", "", 4,,,, 32, Param9;   $ no Param9 in [Params]
@@ -239,8 +247,11 @@ VALUE_ORDER = rule(
     explanation="""
         A parameter's minimum, maximum and default are not in order min <= default <=
         max. Minimum <= default <= maximum, where an empty minimum or maximum is the
-        data type's own bound (Table C.17 note b); for strings and EPATH, minimum length
-        <= maximum length. A default outside the data type's range is EDS102.
+        data type's own bound (Table C.17 note b; for REAL and LREAL the bounds are
+        -INFINITY and INFINITY, values C.4.1.3.10 reserves words for); for strings and
+        EPATH, minimum length <= maximum length. A default of QUIET-NAN or SIGNAL-NAN
+        is not a number to compare and is not reported. A default outside the data
+        type's range is EDS102.
     """,
     bad=block("""
         Param2 = 0,,,0x0000,0xC6,1,"Filter","ms","",10,5,7;
@@ -299,13 +310,14 @@ SCALING_ON_NON_NUMERIC = rule(
     labels=TRIGGERS,
 )
 SCALING_ZERO = rule(
-    "EDS319", Severity.ERROR, "C.4.1.4.6",
-    "A parameter that supports scaling has a scaling multiplier, divisor or base of 0",
+    "EDS319", Severity.ERROR, "C.4.1.4.6", "A parameter that supports scaling has a scaling divisor of 0",
+    clause_note="Figure C.5",
     explanation="""
-        A parameter that supports scaling has a scaling multiplier, divisor or base of
-        0. The descriptor sets bit 2 (supports scaling) and the scaling multiplier,
-        divisor or base is 0: Figure C.5 multiplies by 0 or divides by 0. Zeros with bit
-        2 clear are how Figure C.8 writes "not used" and are not reported.
+        The descriptor sets bit 2 (supports scaling) and the scaling divisor is 0:
+        Figure C.5 divides by it, so no engineering value exists. A multiplier or base of
+        0 is not reported: the formula multiplies by them, no clause forbids 0, and
+        Figure C.11 itself sets the scaling bit with 0 in every scaling field. Zeros with
+        bit 2 clear are how Figure C.8 writes "not used".
     """,
     bad=block("""
         Param2 = 0,,,0x0004,0xC6,1,"Filter","ms","",0,255,3,1,0,1,0;
@@ -544,13 +556,17 @@ UNKNOWN_PORT_TYPE = rule(
     labels=TRIGGERS,
 )
 LEGAL_SLOT_OUT_OF_RANGE = rule(
-    "EDS334", Severity.ERROR, "C.4.1.5.2.2",
-    "A Rack legal slot is not a slot of the chassis (0 to DefineSlotsInRack - 1)",
+    "EDS334", Severity.ERROR, "C.4.1.5.2.3",
+    "A Rack legal slot is not a slot of the chassis the file itself describes (0 to DefineSlotsInRack - 1)",
+    clause_note="DefineSlotsInRack: C.4.1.5.2.2",
     explanation="""
-        In a file that gives both DefineSlotsInRack and RackN entries (a chassis with
-        modules of its own), a legal slot shall be a slot of the chassis, 0 to
-        DefineSlotsInRack - 1 (C.4.1.5.2.2). Files with only one of the two are not
-        checked: the rack is another file's.
+        The Legal Slot fields of a RackN "identify the slots into which the module may be
+        placed" in the chassis the entry's key names (C.4.1.5.2.3), and a chassis has
+        DefineSlotsInRack slots, 0 to DefineSlotsInRack - 1 (C.4.1.5.2.2). Checked where
+        the file gives DefineSlotsInRack and a RackN whose key is the file's own device
+        (vendor, type, product code, major revision: a chassis with modules of its own).
+        A RackN naming another chassis is not checked: that chassis' slots are in its
+        own EDS.
     """,
     bad=block("""
         DefineSlotsInRack = 4;

@@ -52,8 +52,8 @@ from edsconv.model.values import CONTROL_CHARACTER, NULL_TERMINATOR, string_flaw
 REQUIRED, RESERVED = tables.Presence.REQUIRED, tables.Presence.RESERVED
 
 
-#: A vendor-specific keyword whose vendor ID has leading zeros (``0065_Foo``).
-_ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+")
+#: A vendor-specific keyword whose vendor ID has leading zeros (``0065_Foo``, ``[0065_Foo Data]``).
+_ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
 #: C.4.1.5.3: a Proxied entry only supplies the fields its Proxy entry marks "Module";
 #: its other fields are documentation and may be empty, so none is required.
 _PROXIED_FAMILIES = frozenset(spec.keyword for spec in tables.all_entries() if spec.keyword.startswith("Proxied"))
@@ -67,7 +67,8 @@ def _keyword_problem(keyword: str) -> tuple[Rule, str] | None:
     if _ZERO_PADDED_VENDOR_KEYWORD.fullmatch(keyword):
         vendor_id = keyword.partition("_")[0]
         return VENDOR_ID_LEADING_ZERO, f"vendor ID {vendor_id} has leading zeros; write {int(vendor_id)}_..."
-    if keyword[:1].isdigit() and not tables.is_vendor_keyword(keyword):
+    vendor_keyword = tables.VENDOR_SECTION_KEYWORD_RE if " " in keyword else tables.VENDOR_KEYWORD_RE
+    if keyword[:1].isdigit() and not vendor_keyword.fullmatch(keyword):
         return KEYWORD_STARTS_WITH_DIGIT, "a public keyword never starts with a digit and a vendor-specific " \
                                           "one is VendorID_keyword"
     return None

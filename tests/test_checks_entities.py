@@ -166,6 +166,15 @@ def test_safety_connection_may_leave_size_and_format_empty():
     assert found(text, "EDS311") == [] and found(text, "EDS337")
 
 
+@pytest.mark.parametrize("members", ["16,ModuleMemberList", "ModuleMemberList,Param1"])
+def test_lint_reports_a_module_member_list_beside_a_field_of_its_pair(members):
+    # EDS406 is the merge's rule; lint reports it in the adapter's file alone
+    bad = eds(assembly=[ASSEM_IN, f'ProxyAssem1 = "Module data",,,,,,{members};' + M])
+    assert found(bad, "EDS406") == [marked_line(bad)]
+    good = eds(assembly=[ASSEM_IN, 'ProxyAssem1 = "Module data",,,,,,,ModuleMemberList;'])
+    assert found(good, "EDS406") == []
+
+
 def test_legal_slots_of_another_chassis_are_not_bounded_by_this_one():
     # Rack1 names product 2 (this file is product 1): its slots are that chassis'
     text = eds(modular=["DefineSlotsInRack = 4;", "Width = 1;", "Rack1 = 65535,12,2,1,1,,,,7,8;"])

@@ -55,6 +55,7 @@ from edsconv.checks.entity_rules import (
 )
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import Entry
+from edsconv.merge import BAD_MODULE_MEMBER_LIST, module_member_list_faults
 from edsconv.model import (
     MODULE,
     Assembly,
@@ -566,6 +567,16 @@ def assembly_member_paths(ctx: Context) -> Iterator[Diagnostic]:
                     yield ctx.at(PACKED_EPATH_MEMBER, f"{assembly.keyword}: member path \"{path}\" has a 16- or "
                                  f"32-bit logical segment at byte {offset} without the pad byte; write the padded "
                                  "EPATH", _node(assembly.entry, member.field_index + 1))
+
+
+@check(BAD_MODULE_MEMBER_LIST)
+def module_member_lists(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.5.3.2: ModuleMemberList "shall only be used in place of a Member Size and Member Reference
+    field pair"; in the adapter's file alone, as ``edsconv merge`` reports it."""
+    for assembly in ctx.device.assemblies.values():
+        if assembly.family == "ProxyAssem" and assembly.entry is not None:
+            for item, message in module_member_list_faults(assembly.entry):
+                yield ctx.at(BAD_MODULE_MEMBER_LIST, f"{assembly.keyword} {message}", item)
 
 
 @check(SLOT_MASK_PAIR, SLOT_MASK_WITHOUT_SIZE)

@@ -368,6 +368,11 @@ class _Builder:
                 assembly.module_member_list = True
                 index += 1
                 continue
+            second = entry.fields[index + 1].value if index + 1 < len(entry.fields) else None
+            if proxy and isinstance(second, Scalar) and second.raw == MODULE_MEMBER_LIST:
+                assembly.module_member_list = True  # ",ModuleMemberList" (Figure C.15): the pair is the module's
+                index += 2
+                continue
             size = self.value(entry, index, "UINT")
             target = entry.fields[index + 1].value if index + 1 < len(entry.fields) else None
             if isinstance(target, String) and target.text == "":

@@ -114,6 +114,14 @@ CASES = [
      eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = 65535_Safety;"})),
     ("EDS219", eds({"Assembly": ASSEMBLY + "\nVariant1 = 1;"}), "Variant1", eds({"Assembly": ASSEMBLY})),
     ("EDS220", eds({"Capacity": "MaxIOConnections = 4;"}), "[Capacity]", eds({"65535_Capacity": "Max = 4;"})),
+    ("EDS222", eds({"Connection Manger": "Connection1 = 0x04010002;"}), "[Connection Manger]",
+     eds({"Capacity": "MaxIOConnections = 4;"})),
+    ("EDS222", eds({"Device": MINIMAL["Device"] + '\nCatalogue = "PRB-1";'}), "Catalogue",
+     eds({"Device": MINIMAL["Device"] + '\nCatalog = "PRB-1";'})),
+    ("EDS222", eds({"Params": 'Parameter1 = 0, , , 0x0000, 0xC6, 1, "P", "", "", 0, 10, 1;'}), "Parameter1",
+     eds({"Params": 'Param1 = 0, , , 0x0000, 0xC6, 1, "P", "", "", 0, 10, 1;'})),
+    ("EDS222", eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = Profibus;"}), "Profibus",
+     eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = Safety;"})),
     ("EDS221", eds({"Port": PORT.replace("TCP", "DeviceNet")}), "[Port]", eds({"Port": PORT})),
 ]
 
@@ -162,6 +170,35 @@ def test_forward_reference_through_a_connection_path():
     assert [found for found in structure(text) if found[0] == "EDS204"] == [at("EDS204", text, '"20 04')]
     placed = eds({"Params": param, "Assembly": ASSEMBLY, "Connection Manager": connection})
     assert "EDS204" not in [found for found, _, _ in structure(placed)]
+
+
+@pytest.mark.parametrize(("text", "meant"), [
+    (eds({"Connection Manger": "Connection1 = 0x04010002;"}), "[Connection Manager]"),
+    (eds({"Device": MINIMAL["Device"] + '\nCatalogue = "PRB-1";'}), "Catalog"),
+    (eds({"Params": 'Parameter5 = 0, , , 0x0000, 0xC6, 1, "P", "", "", 0, 10, 1;'}), "Param5"),
+    (eds({"Groups": 'Grp3 = "G", 0;'}), "Group3"),
+    (eds({"Connection Manager": "Conn2 = 0x04010002;"}), "Connection2"),
+])
+def test_an_unknown_keyword_offers_the_closest_defined_one(text, meant):
+    (message,) = [d.message for d in edsconv.analyse(edsconv.parse(text))[1] if d.code == "EDS222"]
+    assert message.endswith(f"did you mean {meant}?")
+
+
+def test_keywords_defined_elsewhere_or_by_newer_editions_are_information_only():
+    # MaxInst is a [ParamClass] entry (keywords are global in scope, C.4.1.2.2.8); IconContents, Variant1
+    # and [DLR Class] come from later CIP editions (edsconv.cip_tables)
+    text = eds({"Device": MINIMAL["Device"] + '\nIconContents = "AA";', "Connection Manager": "MaxInst = 2;",
+                "Assembly": ASSEMBLY + "\nVariant1 = 1;", "DLR Class": "Revision = 3;"})
+    found = [code for code, _, _ in structure(text)]
+    assert "EDS222" not in found and found.count("EDS219") == 3 and "EDS220" in found
+
+
+def test_one_fault_one_code_for_the_port_type_and_the_query_service():
+    port = eds({"Port": PORT.replace("TCP", "Ethernet")})
+    query = eds({"Modular": 'Width = 1;\nRack1 = 65535,12,1,1,1,,,,0;\nQuery = "20 04 24 07 30 03",3,2,"FF";'})
+    found = [d.code for text in (port, query) for d in edsconv.analyse(edsconv.parse(text))[1]]
+    assert "EDS333" in found and "EDS336" in found
+    assert "EDS219" not in found and "EDS221" not in found and "EDS211" not in found
 
 
 def test_numbering_cites_the_clause_of_its_family():

@@ -20,7 +20,7 @@ import re
 from collections.abc import Iterator
 
 from edsconv import spec_tables as tables
-from edsconv.checks import Context, check
+from edsconv.checks import Context, check, keywords
 from edsconv.checks.structure_rules import (
     FIELDS_BEYOND_2003,
     FORWARD_REFERENCE,
@@ -41,6 +41,7 @@ from edsconv.checks.structure_rules import (
     SECTION_BEYOND_2003,
     SECTION_PLACEMENT,
     TOO_MANY_FIELDS,
+    UNKNOWN_KEYWORD,
     VENDOR_ID_LEADING_ZERO,
     VENDOR_SECTION_NOT_LAST,
 )
@@ -162,15 +163,27 @@ def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
-@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, SECTION_BEYOND_2003)
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, SECTION_BEYOND_2003, UNKNOWN_KEYWORD)
 def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
     for section in ctx.eds.sections:
         problem = _keyword_problem(section.name)
         if problem is not None:
             yield ctx.at(problem[0], f"section [{section.name}]: {problem[1]}", section)
+        elif not keywords.known_section(section.name):
+            meant = keywords.closest(section.name, keywords.section_names())
+            yield ctx.at(UNKNOWN_KEYWORD, f"[{section.name}] {_UNDEFINED}{_did_you_mean(meant and f'[{meant}]')}",
+                         section, clause="C.4.1.2.2.5")
         elif tables.section_spec(section.name) is None:
             yield ctx.at(SECTION_BEYOND_2003, f"[{section.name}] is not a section of ISO 15745-4:2003 (kept)",
                          section)
+
+
+#: What EDS222 says of a keyword no table defines.
+_UNDEFINED = "is defined neither by ISO 15745-4:2003 nor by the newer CIP tables, and is not vendor-specific"
+
+
+def _did_you_mean(keyword: str | None) -> str:
+    return f"; did you mean {keyword}?" if keyword else ""
 
 
 def _reference_places(ctx: Context) -> Iterator[tuple[Entry, int, str, Entry]]:
@@ -240,20 +253,26 @@ def required_entries(ctx: Context) -> Iterator[Diagnostic]:
                                         f"{listed} ({where})", sections[0])
 
 
-@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003)
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003, UNKNOWN_KEYWORD)
 def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Entry keywords: vendor IDs without leading zeros, no public keyword with a leading
-    digit, and keywords the 2003 text does not define (kept, reported as information)."""
+    digit, keywords the 2003 text does not define in their section (kept, reported as
+    information) and keywords no table defines (a warning)."""
     for section in ctx.eds.sections:
         spec = tables.SECTIONS.get(section.name)
         for entry in section.entries:
             problem = _keyword_problem(entry.keyword)
             if problem is not None:
                 yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
-            elif spec is not None and not tables.is_vendor_keyword(entry.keyword) \
-                    and spec.entry(entry.keyword) is None:
+            elif spec is None or tables.is_vendor_keyword(entry.keyword) or spec.entry(entry.keyword) is not None:
+                continue
+            elif tables.entries_named(entry.keyword) or keywords.newer_entry(spec.name, entry.keyword):
                 yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(spec, entry.keyword)} (kept)",
                              entry)
+            else:
+                meant = keywords.closest(entry.keyword, *keywords.entry_keywords(spec.name))
+                yield ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} in [{spec.name}] {_UNDEFINED}{_did_you_mean(meant)}",
+                             entry, clause="C.4.1.2.2.9")
 
 
 def _why_undefined(section: tables.SectionSpec, keyword: str) -> str:
@@ -323,14 +342,20 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
                                                  f"is ignored", item)
 
 
-@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003)
+#: (entry family, field number) of fields whose value a rule of their own checks, so that one fault has
+#: one code: the Port Type Name (EDS333) and the Query service (EDS336).
+_OWN_RULE_FIELDS = frozenset({("Port", 1), ("Query", 2)})
+
+
+@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003, UNKNOWN_KEYWORD)
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
     for entry, spec in _specified_entries(ctx):
         for index, item in enumerate(entry.fields):
             field_spec = spec.field_at(index + 1)
             word = _word(item)
-            if field_spec is None or word is None or word in spec.proxy_keywords:
+            if field_spec is None or word is None or word in spec.proxy_keywords \
+                    or (spec.keyword, index + 1) in _OWN_RULE_FIELDS:
                 continue
             is_keyword_field = "Keyword" in field_spec.alternatives
             problem = _keyword_problem(word) if is_keyword_field and isinstance(item.value, Scalar) else None
@@ -355,9 +380,13 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
     if field_spec.vendor_keywords and isinstance(item.value, Scalar) and tables.KEYWORD_RE.fullmatch(word):
         # An open list (vendors may add keywords): later CIP editions add public
         # ones too, such as the Safety classification.
-        return ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} field {index + 1}: {word} is not a "
-                                           f"{field_spec.name} of ISO 15745-4:2003 ({allowed} or VendorID_keyword; "
-                                           f"kept)", item)
+        if keywords.newer_classification(word):
+            return ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} field {index + 1}: {word} is not a "
+                                               f"{field_spec.name} of ISO 15745-4:2003 ({allowed} or "
+                                               f"VendorID_keyword; kept)", item)
+        meant = keywords.closest(word, keywords.classification_keywords())
+        return ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
+                                       f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)
     vendor = " or a VendorID_keyword" if field_spec.vendor_keywords else ""
     return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {word!r}; allowed: "
                                 f"{allowed}{vendor}", item)
@@ -441,6 +470,10 @@ def ethernetip_port(ctx: Context) -> Iterator[Diagnostic]:
     port_section = ctx.eds.section("Port")
     if port_section is None or not ctx.device.is_ethernetip or not ctx.device.ports:
         return
+    type_names = tables.entry_spec("Port", "Port1").fields[0].choices
+    if any(isinstance(port.type_name, str) and port.type_name not in type_names
+           and not tables.is_vendor_keyword(port.type_name) for port in ctx.device.ports):
+        return  # a misspelt port type (EDS333) may be the TCP port: one fault, one code
     if not any(port.type_name == tables.ETHERNETIP_PORT_TYPE for port in ctx.device.ports):
         types = ", ".join(sorted({port.type_name for port in ctx.device.ports if port.type_name})) or "none"
         yield ctx.at(NO_TCP_PORT, f"the device is classified EtherNetIP but no PortN has the port type "

@@ -183,9 +183,10 @@ NOT_A_CHOICE = rule(
     explanation="""
         A field limited to a list of keywords or values holds another one:
         `ExternIDExactMatch` is `Yes` or `No`, `ExcludeFromAdapterRackConnection` is
-        `"Yes"` or `"No"`, ParamN field 1 is `0`, the Query service is 1 or 14. The open
-        keyword lists (the first field of `ClassN` and `PortN`, which vendors may
-        extend) get EDS219 instead.
+        `"Yes"` or `"No"`, ParamN field 1 is `0`. The open keyword list of the first
+        field of `ClassN`, which vendors and later editions extend, gets EDS219 or
+        EDS222 instead; the Port Type Name and the Query service have rules of their
+        own (EDS333, EDS336), so that one fault has one code.
     """,
     bad=block("""
         [Modular]
@@ -307,11 +308,13 @@ KEYWORD_STARTS_WITH_DIGIT = rule(
 KEYWORD_BEYOND_2003 = rule(
     "EDS219", INFO, "C.4.1.2.2.9", "A keyword not defined by ISO 15745-4:2003 (kept)",
     explanation="""
-        A keyword that ISO 15745-4:2003 does not define: an entry keyword of a section
-        the 2003 text defines (`IconContents`, `AssemExaN`, `MaxInst` in
-        `[Connection Manager]`, the reserved `VariantN` of `[Assembly]`), or a first
-        field of `ClassN`/`PortN` outside the 2003 list (`Safety`). Later CIP editions
-        define many of them; edsconv keeps them as they are.
+        A keyword that ISO 15745-4:2003 does not define in its place but that is defined
+        elsewhere: an entry keyword of a section the 2003 text defines that later CIP
+        editions added (`IconContents`, `AssemExaN`, the reserved `VariantN` of
+        `[Assembly]`), an entry keyword the 2003 text defines for another section
+        (`MaxInst` in `[Connection Manager]`: keywords are global in scope,
+        C.4.1.2.2.8), or a first field of `ClassN` later editions added (`Safety`).
+        edsconv keeps them as they are. A keyword no table defines is EDS222.
     """,
     bad=block("""
         [Device]
@@ -323,9 +326,10 @@ KEYWORD_BEYOND_2003 = rule(
 SECTION_BEYOND_2003 = rule(
     "EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)",
     explanation="""
-        A section that ISO 15745-4:2003 does not define and that is not vendor-specific:
-        `[Capacity]`, the object class sections (`[TCP/IP Interface Class]`,
-        `[DLR Class]` ...), DeviceNet's `[IO_Info]`. Kept as it is.
+        A section that ISO 15745-4:2003 does not define and that is not vendor-specific,
+        but that later CIP editions define: `[Capacity]`, the object class sections
+        (`[TCP/IP Interface Class]`, `[DLR Class]` ...), DeviceNet's `[IO_Info]`. Kept as
+        it is. A section no table defines is EDS222.
     """,
     bad=block("""
         [Capacity]
@@ -338,7 +342,8 @@ NO_TCP_PORT = rule(
     "EDS221", WARNING, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port",
     explanation="""
         The device is classified `EtherNetIP` and has a `[Port]` section, but no `PortN`
-        has the port type `TCP`, the type of an EtherNet/IP port.
+        has the port type `TCP`, the type of an EtherNet/IP port. Not reported when a
+        port type is misspelt (EDS333): that port may be the TCP one.
     """,
     bad=block("""
         [Port]
@@ -348,5 +353,36 @@ NO_TCP_PORT = rule(
         [Port]
                 Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1;
                 Port2 = DeviceNet, "DeviceNet", "20 03 24 01", 2;
+    """),
+)
+UNKNOWN_KEYWORD = rule(
+    "EDS222", WARNING, "C.4.1.2.2.10",
+    "A keyword that neither ISO 15745-4:2003 nor the newer CIP tables define, and that is not vendor-specific",
+    clause_note="C.4.1.2.2.5 sections, C.4.1.2.2.9 entries, C.4.1.4.4 classifications",
+    explanation="""
+        A section keyword, entry keyword or classification keyword that no table edsconv
+        holds defines, and that is not vendor-specific (`VendorID_keyword`): not the
+        2003 text's (Table C.3, the entry tables, C.4.1.4.4) and not one that later CIP
+        editions added ([Capacity], `IconContents`, `Safety` ...; `edsconv.cip_tables`).
+        A public keyword "shall always be defined within the CIP specification"
+        (C.4.1.2.2.10), so this is most likely a misspelling: tools ignore the entry or
+        section, and what it says is lost. When a defined keyword is close, the message
+        offers it ("did you mean").
+
+        A warning, not an error: later CIP editions define keywords edsconv's tables may
+        not hold yet. Keywords the tables hold beyond the 2003 text are EDS219 and
+        EDS220 (information). The Port Type Name has its own rule (EDS333).
+    """,
+    bad=block("""
+        [Device]
+                Catalogue = "PRB-1";            $ did you mean Catalog?
+        [Connection Manger]                     $ did you mean [Connection Manager]?
+        [Params]
+                Parameter1 = ...;               $ did you mean Param1?
+    """),
+    good=block("""
+        [Device]
+                Catalog = "PRB-1";
+                65535_Catalogue = "PRB-1";      $ vendor-specific
     """),
 )

@@ -74,6 +74,13 @@ CASES = [
     ("EDS206", eds({"Device Classification": "65535_Tree = 1;"}), "[Device Classification]", eds()),
     ("EDS207", eds({"Port": 'Port1 = TCP, "EtherNet/IP", "20 F5 24 01", ;'}), ";", eds({"Port": PORT})),
     ("EDS207", eds({"Port": "Port1 = TCP;"}), "Port1", eds({"Port": PORT})),
+    ("EDS207", eds({"Modular": "Width = 1;\nRack1 = 65535, 101, 1, 1, 1,,,;"}), "Rack1",
+     eds({"Modular": "Width = 1;\nRack1 = 65535, 101, 1, 1, 1,,,, 1;"})),
+    ("EDS206", eds({"Modular": "SlotDisplayRule = Param1;"}), "[Modular]", eds({"Modular": "DefineSlotsInRack = 5;"})),
+    ("EDS206", eds({"Modular": "Rack1 = 65535, 101, 1, 1, 1,,,, 1;"}), "[Modular]",
+     eds({"Modular": "Width = 1;\nRack1 = 65535, 101, 1, 1, 1,,,, 1;"})),
+    ("EDS206", eds({"Modular": "Width = 1;"}), "[Modular]",
+     eds({"Modular": "Width = 1;\nRack1 = 65535, 101, 1, 1, 1,,,, 1;"})),
     ("EDS208", eds({"File": MINIMAL["File"].replace('"Test adapter"', '"Test", "adapter"')}), '"adapter"', eds()),
     ("EDS209", eds({"Assembly": ASSEMBLY, "Connection Manager": CONNECTION.replace(";", ", 1;")}), "1;",
      eds({"Assembly": ASSEMBLY, "Connection Manager": CONNECTION})),
@@ -199,6 +206,20 @@ def test_one_fault_one_code_for_the_port_type_and_the_query_service():
     found = [d.code for text in (port, query) for d in edsconv.analyse(edsconv.parse(text))[1]]
     assert "EDS333" in found and "EDS336" in found
     assert "EDS219" not in found and "EDS221" not in found and "EDS211" not in found
+
+
+def test_modular_requirements_by_kind():
+    def missing(body: str) -> list[tuple[str, str]]:
+        found = edsconv.analyse(edsconv.parse(eds({"Modular": body})))[1]
+        return [(d.message.split(" lacks ")[1], d.clause) for d in found if d.code == "EDS206"]
+
+    assert missing("SlotDisplayRule = Param1;") == [("the required entry DefineSlotsInRack (C.4.1.5.2.2)",
+                                                     "C.4.1.5.2.2")]
+    assert missing('Query = "20 04 24 07 30 03",1,2,"FF FF";') == [
+        ("the required entries Width, RackN (C.4.1.5.2.3)", "C.4.1.5.2.3")]
+    # a chassis with modules of its own, and an empty section (C.4.1.2.2.7 allows empty place holders)
+    assert missing("DefineSlotsInRack = 4;\nWidth = 1;\nRack1 = 65535,12,1,1,1,,,,1;") == []
+    assert missing("") == []
 
 
 def test_numbering_cites_the_clause_of_its_family():

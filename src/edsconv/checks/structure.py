@@ -58,6 +58,9 @@ _ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+(?: [A-Za-z0-9_]
 #: C.4.1.5.3: a Proxied entry only supplies the fields its Proxy entry marks "Module";
 #: its other fields are documentation and may be empty, so none is required.
 _PROXIED_FAMILIES = frozenset(spec.keyword for spec in tables.all_entries() if spec.keyword.startswith("Proxied"))
+#: Entries whose repeating tail is as long as a field of theirs says: GroupN lists Number of Members
+#: parameters (Table C.19), which may be none.
+_COUNTED_TAILS = frozenset({"Group"})
 #: A section of DeviceNet EDS files only (CIP Vol 3: the I/O messages of a DeviceNet
 #: slave); those files predate [Device Classification], which Table C.3 leaves optional.
 _DEVICENET_SECTIONS = frozenset({"IO_Info"})
@@ -253,6 +256,34 @@ def required_entries(ctx: Context) -> Iterator[Diagnostic]:
                                         f"{listed} ({where})", sections[0])
 
 
+#: C.4.1.5.2.1: a [Modular] section describes a chassis or a module; these entries show which. A chassis
+#: "shall contain a required keyword DefineSlotsInRack" (C.4.1.5.2.2), a module "the Width and Rack
+#: entries" (C.4.1.5.2.3, Table C.26).
+_CHASSIS_ENTRIES, _MODULE_ENTRIES = ("DefineSlotsInRack", "SlotDisplayRule"), \
+    ("Width", "Rack", "ExternalID", "GenericID", "ExternIDExactMatch", "Query")
+_CHASSIS_REQUIRES, _MODULE_REQUIRES = ("DefineSlotsInRack",), ("Width", "Rack")
+
+
+@check(MISSING_ENTRY)
+def modular_entries(ctx: Context) -> Iterator[Diagnostic]:
+    """The entries a chassis or a module [Modular] section requires; an empty section describes neither."""
+    sections = _sections_by_name(ctx).get("Modular")
+    if not sections:
+        return
+    present = {spec.keyword for section in sections for entry in section.entries
+               if (spec := tables.entry_spec("Modular", entry.keyword)) is not None}
+    for kind, shown_by, required in (("chassis", _CHASSIS_ENTRIES, _CHASSIS_REQUIRES),
+                                     ("module", _MODULE_ENTRIES, _MODULE_REQUIRES)):
+        shown = [keyword for keyword in shown_by if keyword in present]
+        missing = [keyword for keyword in required if keyword not in present]
+        if shown and missing:
+            clause = tables.entry_spec("Modular", required[0]).clause
+            listed = ", ".join(f"{keyword}N" if keyword == "Rack" else keyword for keyword in missing)
+            yield ctx.at(MISSING_ENTRY, f"[Modular] describes a {kind} ({', '.join(shown)}) but lacks the required "
+                                        f"entr{'ies' if len(missing) > 1 else 'y'} {listed} ({clause})", sections[0],
+                         clause=clause)
+
+
 @check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003, UNKNOWN_KEYWORD)
 def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Entry keywords: vendor IDs without leading zeros, no public keyword with a leading
@@ -315,8 +346,10 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
     for entry, spec in _specified_entries(ctx):
         missing = []
         for field_spec in spec.fields:
-            if field_spec.presence is not REQUIRED or field_spec.repeats or spec.keyword in _PROXIED_FAMILIES:
+            if field_spec.presence is not REQUIRED or spec.keyword in _PROXIED_FAMILIES:
                 continue
+            if field_spec.repeats and (spec.keyword in _COUNTED_TAILS or field_spec is not spec.repeating[0]):
+                continue  # a required repeating tail needs its first field (a RackN one Legal Slot)
             index = field_spec.number - 1
             if index >= len(entry.fields):
                 missing.append(f"{field_spec.number} ({field_spec.name})")

@@ -97,13 +97,18 @@ NOT_ETHERNETIP = rule(
 )
 MISSING_ENTRY = rule(
     "EDS206", ERROR, "C.4.1.4", "A section lacks an entry the spec requires",
-    clause_note="Tables C.6, C.8, C.10; C.4.1.4.4",
+    clause_note="Tables C.6, C.8, C.10; C.4.1.4.4; C.4.1.5.2.2, C.4.1.5.2.3",
     explanation="""
         A section lacks an entry its table marks Required: `DescText`, `CreateDate`,
         `CreateTime`, `Revision` in `[File]`; `VendCode`, `VendName`, `ProdType`,
         `ProdTypeStr`, `ProdCode`, `MajRev`, `MinRev`, `ProdName` in `[Device]`; the
         three entries of `[ParamClass]`; a `ClassN` in `[Device Classification]`.
-        One diagnostic per section, at its header, names every missing entry.
+        A `[Modular]` section that describes a chassis (it has `DefineSlotsInRack` or
+        `SlotDisplayRule`) requires `DefineSlotsInRack` (C.4.1.5.2.2); one that describes
+        a module (`Width`, `RackN`, `ExternalID`, `GenericID`, `ExternIDExactMatch` or
+        `Query`) requires `Width` and a `RackN` (C.4.1.5.2.3): `edsconv merge` matches
+        files by their Rack entries. One diagnostic per section (per kind for
+        `[Modular]`), at its header, names every missing entry and cites its clause.
     """,
     bad=block("""
         [File]
@@ -119,7 +124,9 @@ REQUIRED_FIELD_EMPTY = rule(
     explanation="""
         A field the entry's table marks Required is empty, or the entry ends before it.
         Every entry with a layout in the spec is checked (ParamN field 1, 4-9, 12;
-        ConnectionN fields 1, 2, 13-15; PortN fields 1 and 4 ...). A string that is
+        ConnectionN fields 1, 2, 13-15; PortN fields 1 and 4; a RackN's first Legal
+        Slot, field 9, since a module fits at least one slot; the first value of an
+        EnumN ...). A GroupN may list no parameter: its Number of Members says how many. A string that is
         empty by meaning is written `""`, not left out. ProxiedParamN, ProxiedAssemN and
         ProxiedConnectN are exempt: they only supply the fields their Proxy entry marks
         `Module` (C.4.1.5.3).

@@ -79,7 +79,8 @@ Sections, entries and keywords that later CIP editions added are information
 a DeviceNet EDS without classification (it has an `[IO_Info]` section); those
 follow Table C.3 alone."""),
     RuleGroup("Parameters, assemblies, connections, ports, modules (EDS3xx)", ("EDS3",), """\
-Checks of `src/edsconv/checks/entities.py`. They read the typed model: a value
+Checks of `src/edsconv/checks/entities.py` and, for paths, instance numbers,
+ports, racks and slots, `src/edsconv/checks/addressing.py`. They read the typed model: a value
 that failed conversion already has an EDS1xx diagnostic and is not reported
 again, and a `Module` field of a Proxy entry defers to the module's file.
 Proxied entries without a matching Proxy entry are normal (the two live in

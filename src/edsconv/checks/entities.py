@@ -24,14 +24,16 @@ from edsconv.checks.entity_rules import (
     DUPLICATE_CONNECTION_NAME,
     DUPLICATE_PORT_NUMBER,
     EMPTY_MEMBER,
+    ENUM_NOT_PAIRS,
     ENUM_WITHOUT_DESCRIPTOR_BIT,
     GROUP_MEMBER_COUNT,
     LEGAL_SLOT_OUT_OF_RANGE,
+    MEMBER_FIELDS_ODD,
     MODULE_IN_MEMBER,
     NESTED_ASSEMBLY,
     NO_CLASS_OR_TRIGGER,
-    PACKED_EPATH_MEMBER,
     PARAM_RESERVED_BITS,
+    PARAMCLASS_RESERVED_BITS,
     PARAMETERS_RESERVED_BITS,
     PROXY_CONNECT_NAME_MODULE,
     QUERY_FIELD_VALUE,
@@ -58,6 +60,7 @@ from edsconv.eds.syntax import Entry
 from edsconv.merge import BAD_MODULE_MEMBER_LIST, module_member_list_faults
 from edsconv.model import (
     MODULE,
+    MODULE_MEMBER_LIST,
     Assembly,
     AssemblyMember,
     Connection,
@@ -106,7 +109,7 @@ def _reference_clause(ref: Reference) -> str:
     if family in _CONNECTION_FAMILIES and ref.field_index < len(tables.CONNECTION_FIELDS):
         return tables.CONNECTION_FIELDS[ref.field_index].clause
     if family == "SlotDisplayRule":
-        return tables.entry_spec("Modular", family).clause
+        return next(spec.clause for spec in tables.MODULAR_ENTRIES if spec.keyword == family)
     return tables.ASSEM_FIELDS[0].clause
 
 
@@ -163,6 +166,27 @@ def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
                 yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: the path names {item.reference}, a "
                              f"{target.data_type.name}; path parameters shall be USINT, UINT or UDINT",
                              _node(connection.entry, 14))
+
+
+def _written_count(entry: Entry) -> int:
+    """The number of fields up to the last one that holds a value."""
+    return next((index + 1 for index in range(len(entry.fields) - 1, -1, -1) if entry.fields[index].value is not None),
+                0)
+
+
+@check(ENUM_NOT_PAIRS)
+def enum_pairs(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.6: "Each Enum entry shall consist of pairs of integers and strings"."""
+    for section in ctx.eds.sections:
+        if section.name != "Params":
+            continue
+        for entry in section.entries:
+            spec = tables.entry_spec("Params", entry.keyword)
+            count = _written_count(entry)
+            if spec is not None and spec.fields == tables.ENUM_FIELDS and count % 2:
+                last = entry.fields[count - 1]
+                yield ctx.at(ENUM_NOT_PAIRS, f"{entry.keyword} has {count} fields; its last value {last.raw} has no "
+                             "string", last)
 
 
 @check(UNPAIRED_ENTRY)
@@ -314,9 +338,14 @@ def proxy_connect_names(ctx: Context) -> Iterator[Diagnostic]:
 # --- parameters ------------------------------------------------------------------------
 
 
-@check(PARAM_RESERVED_BITS, ASSEMBLY_RESERVED_BITS)
+@check(PARAM_RESERVED_BITS, ASSEMBLY_RESERVED_BITS, PARAMCLASS_RESERVED_BITS)
 def descriptors(ctx: Context) -> Iterator[Diagnostic]:
-    """Tables C.15 and C.21: reserved descriptor bits shall be 0."""
+    """Tables C.12, C.15 and C.21: reserved descriptor bits shall be 0."""
+    param_class = ctx.device.param_class
+    if param_class is not None:
+        yield from _reserved_bits(ctx, PARAMCLASS_RESERVED_BITS, "[ParamClass] Descriptor", "parameter class "
+                                  "descriptor", param_class.descriptor, tables.PARAMCLASS_DESCRIPTOR_BITS,
+                                  _section_entry(ctx.device, "ParamClass", "Descriptor"))
     for parameter in ctx.device.parameters.values():
         yield from _reserved_bits(ctx, PARAM_RESERVED_BITS, parameter.keyword, "descriptor", parameter.descriptor,
                                   tables.PARAM_DESCRIPTOR_BITS, _node(parameter.entry, 3))
@@ -325,8 +354,10 @@ def descriptors(ctx: Context) -> Iterator[Diagnostic]:
                                   tables.ASSEM_DESCRIPTOR_BITS, _node(assembly.entry, 3))
 
 
-def _type_bounds(data_type: tables.DataType) -> tuple[object, object]:
+def _type_bounds(data_type: tables.DataType | None) -> tuple[object, object]:
     """The bounds of a data type's values: REAL and LREAL hold -INFINITY and INFINITY too (C.4.1.3.10)."""
+    if data_type is None:
+        return None, None
     if data_type.kind == "real":
         return -math.inf, math.inf
     return data_type.minimum, data_type.maximum
@@ -528,45 +559,30 @@ def _contains(outer: Assembly, wanted: Assembly, seen: set[str]) -> bool:
     return False
 
 
-#: CIP logical segments (segment type 001): bits 0-1 give the value format,
-#: 0 = 8-bit, 1 = 16-bit, 2 = 32-bit; a padded path puts one pad byte before a
-#: 16- or 32-bit value so that every segment is a whole number of 16-bit words.
-_LOGICAL_SEGMENT_TYPE, _SEGMENT_TYPE_MASK = 0x20, 0xE0
-_LOGICAL_VALUE_BYTES = {0: 1, 1: 2, 2: 4}
-
-
-def _packed_segment(path: tuple[PathItem, ...]) -> int | None:
-    """Offset of the first logical segment written in packed form (no pad byte
-    before a 16- or 32-bit value), or None when the path is padded. Walks the
-    leading logical segments only: other segment types (data segments) end it."""
-    data = [item.byte for item in path]
-    offset = 0
-    while offset < len(data) and data[offset] is not None \
-            and data[offset] & _SEGMENT_TYPE_MASK == _LOGICAL_SEGMENT_TYPE:
-        value_bytes = _LOGICAL_VALUE_BYTES.get(data[offset] & 0x03)
-        if value_bytes is None:
-            return None  # special logical format (electronic key): not a packing question
-        if value_bytes == 1:
-            offset += 2
-            continue
-        padded_end = offset + 2 + value_bytes
-        if padded_end > len(data) or data[offset + 1] != 0:
-            return offset
-        offset = padded_end
+def _unpaired_member_size(assembly: Assembly) -> int | None:
+    """0-based index of a last Member Size without its Member Reference; a lone ModuleMemberList of a
+    ProxyAssem stands for a whole pair (C.4.1.5.3.2), as the model reads it."""
+    entry = assembly.entry
+    if entry is None:
+        return None
+    index, end = tables.ASSEM_FIELDS[-2].number - 1, len(entry.fields)
+    while index < end:
+        lone = assembly.family == "ProxyAssem" and entry.fields[index].raw == MODULE_MEMBER_LIST
+        if index + 1 == end and not lone:
+            return index if entry.fields[index].value is not None else None  # empty: EDS323
+        index += 1 if lone else 2
     return None
 
 
-@check(PACKED_EPATH_MEMBER)
-def assembly_member_paths(ctx: Context) -> Iterator[Diagnostic]:
+@check(MEMBER_FIELDS_ODD)
+def assembly_member_pairs(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.8: member fields are Member Size / Member Reference pairs, "making the total number of fields
+    even"."""
     for assembly in ctx.device.assemblies.values():
-        for member in assembly.members:
-            if isinstance(member.reference, tuple):
-                offset = _packed_segment(member.reference)
-                if offset is not None:
-                    path = " ".join(str(item) for item in member.reference)
-                    yield ctx.at(PACKED_EPATH_MEMBER, f"{assembly.keyword}: member path \"{path}\" has a 16- or "
-                                 f"32-bit logical segment at byte {offset} without the pad byte; write the padded "
-                                 "EPATH", _node(assembly.entry, member.field_index + 1))
+        index = _unpaired_member_size(assembly)
+        if index is not None:
+            yield ctx.at(MEMBER_FIELDS_ODD, f"{assembly.keyword}: field {index + 1} is a Member Size without a "
+                         "Member Reference; member fields come in pairs", _node(assembly.entry, index))
 
 
 @check(BAD_MODULE_MEMBER_LIST)
@@ -622,9 +638,13 @@ def _names_this_device(rack: Rack, device: Device) -> bool:
                             identity.major_revision)
 
 
-def _modular_entry(device: Device, keyword: str) -> Entry | None:
-    section = device.eds.section("Modular") if device.eds is not None else None
+def _section_entry(device: Device, section_name: str, keyword: str) -> Entry | None:
+    section = device.eds.section(section_name) if device.eds is not None else None
     return section.entry(keyword) if section is not None else None
+
+
+def _modular_entry(device: Device, keyword: str) -> Entry | None:
+    return _section_entry(device, "Modular", keyword)
 
 
 @check(LEGAL_SLOT_OUT_OF_RANGE, WIDTH_ZERO, QUERY_FIELD_VALUE)

@@ -1,4 +1,5 @@
-"""The rules the entity checks report (EDS301-EDS337), each with its documentation.
+"""The rules the entity checks report (EDS301-EDS340; EDS328 and EDS341 on are the addressing rules), each
+with its documentation.
 
 The checks are in :mod:`edsconv.checks.entities`; docs/rules.md is generated from these definitions
 (``edsconv rules --format markdown``). They have a module of their own because they outgrow the checks.
@@ -453,27 +454,6 @@ ASSEMBLY_CYCLE = rule(
     """),
     labels=TRIGGERS,
 )
-PACKED_EPATH_MEMBER = rule(
-    "EDS328", Severity.ERROR, "C.4.1.4.8", "An assembly member path is a packed EPATH (no pad bytes)",
-    import_blocking=True,
-    explanation="""
-        A member reference path is a *packed* EPATH: a 16- or 32-bit logical segment
-        (segment byte 0x21, 0x25, 0x2D, 0x31 ... with value format 1 or 2) is followed
-        directly by its value instead of by a 0x00 pad byte. EDS paths use the padded
-        notation (C.4.1.4.9.13 names it for connection paths; the CIP padded EPATH keeps
-        every segment a whole number of 16-bit words), and Rockwell's import refuses packed
-        EPATH members. Only the leading logical segments are examined; a data segment ends
-        the walk. Reading of Rockwell's rule: "packed" is the CIP term for the pad-less
-        encoding, not a path with several segments.
-    """,
-    bad=block("""
-        Assem101 = "Path","",4,,,,32,"20 04 25 64 00 30 03";
-    """),
-    good=block("""
-        Assem101 = "Path","",4,,,,32,"20 04 25 00 64 00 30 03";
-    """),
-    labels=TRIGGERS,
-)
 SLOT_MASK_PAIR = rule(
     "EDS329", Severity.ERROR, "C.4.1.5.3.2",
     "An assembly uses both slot mask keywords of a pair (InputSlotMask0 and InputSlotMask1 ...)",
@@ -624,5 +604,49 @@ SAFETY_REAL_TIME_FORMAT = rule(
     good=block("""
         Connection1 = 0x04010002, 0x44640405, ...
     """),
+    labels=TRIGGERS,
+)
+PARAMCLASS_RESERVED_BITS = rule(
+    "EDS338", Severity.ERROR, "C.4.1.4.5", "The parameter class descriptor sets bits Table C.12 does not define",
+    clause_note="Table C.12",
+    explanation="""
+        The `Descriptor` of `[ParamClass]` sets a bit beyond 0-3: "Bits not defined in Table
+        C.12 shall not be used and shall be set to zero" (C.4.1.4.5). An error, unlike the
+        parameter descriptor's reserved bits (EDS314): no later edition is known to assign
+        them, and no real file of the test corpus sets them.
+    """,
+    bad=block("""
+        [ParamClass]
+                Descriptor = 0x0010;
+    """),
+    good=block("""
+        [ParamClass]
+                Descriptor = 0x000E;
+    """),
+    labels=TRIGGERS,
+)
+ENUM_NOT_PAIRS = rule(
+    "EDS339", Severity.ERROR, "C.4.1.4.6", "An EnumN does not consist of value / string pairs",
+    explanation="""
+        "Each Enum entry shall consist of pairs of integers and strings" (C.4.1.4.6); this
+        one has an odd number of fields, so its last value has no string and no tool can
+        show it. (EnumN with `ProxyEnumN` and `ProxiedEnumN`, C.4.1.5.3.1.) Empty fields at
+        the end are not counted.
+    """,
+    bad='`Enum2 = 0,"Off",1,"On",2;`',
+    good='`Enum2 = 0,"Off",1,"On",2,"Auto";`',
+    labels=TRIGGERS,
+)
+MEMBER_FIELDS_ODD = rule(
+    "EDS340", Severity.ERROR, "C.4.1.4.8", "An assembly's member fields are not Member Size / Member Reference pairs",
+    explanation="""
+        The fields from 7 on "shall be paired such that a Member Size field is paired with a
+        Member Reference field making the total number of fields even" (C.4.1.4.8); this
+        assembly ends with a Member Size that has no Member Reference, which tools read as
+        a pad or drop. A `ModuleMemberList` alone stands for a whole pair (C.4.1.5.3.2). A
+        trailing empty field is EDS323.
+    """,
+    bad='`Assem100 = "In","",4,,,,32,Param1,16;`',
+    good='`Assem100 = "In","",6,,,,32,Param1,16,;`   $ a 16-bit pad',
     labels=TRIGGERS,
 )

@@ -277,7 +277,7 @@ def modular_entries(ctx: Context) -> Iterator[Diagnostic]:
         shown = [keyword for keyword in shown_by if keyword in present]
         missing = [keyword for keyword in required if keyword not in present]
         if shown and missing:
-            clause = tables.entry_spec("Modular", required[0]).clause
+            clause = next(spec.clause for spec in tables.MODULAR_ENTRIES if spec.keyword == required[0])
             listed = ", ".join(f"{keyword}N" if keyword == "Rack" else keyword for keyword in missing)
             yield ctx.at(MISSING_ENTRY, f"[Modular] describes a {kind} ({', '.join(shown)}) but lacks the required "
                                         f"entr{'ies' if len(missing) > 1 else 'y'} {listed} ({clause})", sections[0],
@@ -503,8 +503,7 @@ def ethernetip_port(ctx: Context) -> Iterator[Diagnostic]:
     port_section = ctx.eds.section("Port")
     if port_section is None or not ctx.device.is_ethernetip or not ctx.device.ports:
         return
-    type_names = tables.entry_spec("Port", "Port1").fields[0].choices
-    if any(isinstance(port.type_name, str) and port.type_name not in type_names
+    if any(isinstance(port.type_name, str) and port.type_name not in tables.PORT_TYPE_KEYWORDS
            and not tables.is_vendor_keyword(port.type_name) for port in ctx.device.ports):
         return  # a misspelt port type (EDS333) may be the TCP port: one fault, one code
     if not any(port.type_name == tables.ETHERNETIP_PORT_TYPE for port in ctx.device.ports):

@@ -149,6 +149,9 @@ def test_eds110_url_without_a_scheme():
 
     assert url_codes("www.example.com") == ["EDS110"]
     assert url_codes("htts://www.example.com") == ["EDS110"]
+    assert url_codes("http://www.example.com/probe eds/a.eds") == ["EDS110"]  # RFC 1738: a space only as %20
+    assert url_codes("http://www.example.com/50%/a.eds") == ["EDS110"]
+    assert url_codes("http://www.example.com/probe%20eds/~a.eds#top") == []
     assert url_codes("https://www.example.com") == []
     assert url_codes("ftp://example.com/eds") == []
 

@@ -24,6 +24,7 @@ from edsconv.checks import Context, check, keywords
 from edsconv.checks.structure_rules import (
     FIELDS_BEYOND_2003,
     FORWARD_REFERENCE,
+    ICON_NOT_ICO,
     ICON_WITHOUT_HOME_URL,
     KEYWORD_BEYOND_2003,
     KEYWORD_STARTS_WITH_DIGIT,
@@ -486,15 +487,22 @@ def _when(moment: tuple) -> str:
     return f"{date.isoformat()} {time.isoformat()}" if time is not None else date.isoformat()
 
 
-@check(ICON_WITHOUT_HOME_URL)
-def icon_needs_home_url(ctx: Context) -> Iterator[Diagnostic]:
-    """Table C.9: the icon's location is HomeURL's folder, so Icon "shall only be present when a HomeURL exists"."""
+@check(ICON_WITHOUT_HOME_URL, ICON_NOT_ICO)
+def icon(ctx: Context) -> Iterator[Diagnostic]:
+    """Table C.9: the icon's location is HomeURL's folder, so Icon "shall only be present when a HomeURL
+    exists"; the file "shall have the *.ICO MSWindows format"."""
     device_section = ctx.eds.section("Device")
-    icon = device_section.entry("Icon") if device_section is not None else None
+    icon_entry = device_section.entry("Icon") if device_section is not None else None
+    if icon_entry is None:
+        return
     file_section = ctx.eds.section("File")
-    if icon is not None and (file_section is None or file_section.entry("HomeURL") is None):
+    if file_section is None or file_section.entry("HomeURL") is None:
         yield ctx.at(ICON_WITHOUT_HOME_URL, "Icon names a file relative to HomeURL, but [File] has no HomeURL",
-                     icon)
+                     icon_entry)
+    name = ctx.device.identity.icon
+    if isinstance(name, str) and not name.strip().lower().endswith(".ico"):
+        yield ctx.at(ICON_NOT_ICO, f"Icon {name!r} does not end in .ico; the icon file shall have the MS Windows "
+                                   "ICO format", icon_entry.fields[0] if icon_entry.fields else icon_entry)
 
 
 @check(NO_TCP_PORT)

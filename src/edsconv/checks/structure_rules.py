@@ -393,3 +393,15 @@ UNKNOWN_KEYWORD = rule(
                 65535_Catalogue = "PRB-1";      $ vendor-specific
     """),
 )
+ICON_NOT_ICO = rule(
+    "EDS223", WARNING, "C.4.1.4.3", "The Icon file name does not end in .ico",
+    clause_note="Table C.9",
+    explanation="""
+        The icon file "shall have the *.ICO MSWindows format" (Table C.9); the name in
+        `Icon` does not end in `.ico` (in any case). A warning, not an error: the text
+        constrains the file's format, which the EDS does not hold, and a name is only a
+        strong sign of it. (All 47 real files with an `Icon` name an `.ico` file.)
+    """,
+    bad='`Icon = "adapter.png";`',
+    good='`Icon = "adapter.ico";`',
+)

@@ -177,6 +177,15 @@ def test_undefined_references_cite_the_clause_of_their_field():
     assert sorted(cited.values()) == ["C.4.1.4.8", "C.4.1.4.9.13", "C.4.1.4.9.4", "C.4.1.5.2.2"], cited
 
 
+def test_wrong_parameter_types_cite_the_clause_of_their_field():
+    real = 'Param3 = 0,,,0x0000,0xCA,4,"Value","","",,,0.0;'
+    text = eds(params=[PARAM_RPI, usint(), real],
+               connections=[connection(rpi="Param2", size="Param1").replace("2C 64", "2C [Param3]")])
+    _, diagnostics = edsconv.analyse(edsconv.parse(text))
+    assert sorted(d.clause for d in diagnostics if d.code == "EDS302") == ["C.4.1.4.9.13", "C.4.1.4.9.4",
+                                                                           "C.4.1.4.9.5"]
+
+
 def test_a_group_may_list_a_parameter_instance_without_a_paramn():
     # C.4.1.4.6: not every Parameter object instance needs a ParamN entry; a GroupN lists instances
     assert found(eds(groups=['Group1 = "Setup", 2, 1, 9;']), "EDS301") == []

@@ -158,14 +158,14 @@ def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
                 if data_type is not None and data_type.name not in allowed:
                     yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: {name} names {value.keyword}, a "
                                  f"{data_type.name}; it shall evaluate to {' or '.join(allowed)}",
-                                 _node(connection.entry, index))
+                                 _node(connection.entry, index), clause=tables.CONNECTION_FIELDS[index].clause)
         for item in _path_references(connection):
             target = ctx.device.resolve(item.reference)
             if isinstance(target, Parameter) and target.data_type is not None \
                     and target.data_type.name not in _PATH_TYPES:
                 yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: the path names {item.reference}, a "
                              f"{target.data_type.name}; path parameters shall be USINT, UINT or UDINT",
-                             _node(connection.entry, 14))
+                             _node(connection.entry, 14), clause=_PATH_CLAUSE)
 
 
 def _written_count(entry: Entry) -> int:

@@ -41,6 +41,7 @@ UNDEFINED_REFERENCE = rule(
 WRONG_PARAMETER_TYPE = rule(
     "EDS302", Severity.ERROR, "C.4.1.4.9.4",
     "A parameter named as a connection RPI, size or path value does not have the data type the field evaluates to",
+    clause_note="the clause of the field: C.4.1.4.9.4, .7 RPI; C.4.1.4.9.5, .8, .10 sizes; C.4.1.4.9.13 path",
     explanation="""
         A parameter named as a connection RPI, size or path value does not have the data
         type the field evaluates to. A connection's RPI shall evaluate to a UDINT, a
@@ -283,7 +284,9 @@ BIT_STRING_MIN_MAX = rule(
     explanation="""
         A bit string parameter (BYTE, WORD, DWORD, LWORD) gives a minimum or maximum
         (Table C.17). BYTE, WORD, DWORD and LWORD have no minimum or maximum; they shall
-        not be specified (Table C.17). A warning: tools ignore them.
+        not be specified (Table C.17). A warning, not an error: 11 of the 61 real files
+        (193 parameters, Murrelektronik's product files among them) give them, and tools
+        ignore them.
     """,
     bad=block("""
         Param3 = 0,,,0x0000,0xD2,2,"Word","","",0,0xFFFF,0;
@@ -300,7 +303,8 @@ SCALING_ON_NON_NUMERIC = rule(
         A parameter of a non-numeric type gives scaling, link or precision fields (Table
         C.18). Fields 13-21 (scaling, links, decimal precision) are only for SINT ...
         ULINT, REAL and LREAL; giving them for other types is prohibited (Table C.18). A
-        warning: tools ignore them.
+        warning, not an error: Rockwell's own EDS of the E1 Plus module
+        (00010003012C0100.eds) gives them for 21 parameters, and tools ignore them.
     """,
     bad=block("""
         Param3 = 0,,,0x0000,0xD2,2,"Word","","",,,0,1,1,1,0;

@@ -176,7 +176,10 @@ RESERVED_FIELD_SET = rule(
     explanation="""
         A reserved field is not empty: fields 5 and 6 of `AssemN` and `PortN`, fields
         6-8 of `RackN`. Tools ignore the value. In an `AssemN` it often means the
-        member pairs start two fields too early.
+        member pairs start two fields too early. A warning, not an error: Table C.20 and
+        C.26 say "shall be empty" (Table C.25 only "Not Used"), but 8 of the 61 real files
+        write 0 in a PortN's field 5 (OpENer-based files and the ifm AL1322), and tools
+        ignore it.
     """,
     bad=block("""
                 Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1, 0x00;
@@ -260,7 +263,8 @@ MODIFIED_BEFORE_CREATED = rule(
     "EDS215", WARNING, "C.4.1.4.2", "The last modification is dated before the creation",
     explanation="""
         The last modification (`ModDate`, with `ModTime` when both times are given) is
-        before the creation (`CreateDate`, `CreateTime`).
+        before the creation (`CreateDate`, `CreateTime`). No clause forbids it in so many
+        words, so a warning: it is most likely a slip in one of the dates.
     """,
     bad=block("""
                 CreateDate = 01-02-2020;
@@ -346,11 +350,14 @@ SECTION_BEYOND_2003 = rule(
     labels=("Example", "Not reported"),
 )
 NO_TCP_PORT = rule(
-    "EDS221", WARNING, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port",
+    "EDS221", ERROR, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port",
     explanation="""
         The device is classified `EtherNetIP` and has a `[Port]` section, but no `PortN`
-        has the port type `TCP`, the type of an EtherNet/IP port. Not reported when a
-        port type is misspelt (EDS333): that port may be the TCP one.
+        has the port type `TCP`: "the PortN entry corresponding to an EtherNet/IP
+        compliant port shall" have the Port Type Name `TCP` (C.4.2.2.2), and every CIP
+        routable port has an entry (C.4.1.4.10). An error, as the text's "shall": none of
+        the 61 real files breaks it. Not reported when a port type is misspelt (EDS333):
+        that port may be the TCP one.
     """,
     bad=block("""
         [Port]

@@ -138,8 +138,9 @@ BAD_URL = rule(
         holds a character a URL writes only encoded (white space, a control character,
         `<`, `>`, `"`, `{`, `}`, `|`, `\\`, `^`, `[`, `]`, `` ` ``, or a `%` that does not
         begin a `%XX` escape). A warning, not an error: 18 of the 61 real files write
-        their HomeURL without one of these schemes (`www.example.com`, `htts://`), files
-        of certified products among them, and tools show it as text.
+        their HomeURL without one of these schemes (`www.example.com`, `htts://`), the
+        files of Texas Instruments, Hilscher and Murrelektronik products among them, and
+        tools show it as text.
     """,
     bad='`HomeURL = "www.example.com";`.',
     good='`HomeURL = "https://www.example.com";`',
@@ -171,7 +172,9 @@ REVISION_BEYOND_2003 = rule(
     "A revision has more than one digit per part, beyond the 2003 EDS_Revision limit",
     explanation="""
         A revision has more than one digit in a part (`2.11`); the 2003 text allows 0 to
-        9 each. Read as major 2, minor 11, as configuration tools do.
+        9 each. Read as major 2, minor 11, as configuration tools do. A warning, not an
+        error: 3 of the 61 real files, of products by Murrelektronik (Cube67), ifm (AL1322)
+        and Mettler Toledo (IND131), write two-digit parts, and tools read them.
     """,
     bad="`Revision = 2.11;`.",
     good="`Revision = 2.1;`",

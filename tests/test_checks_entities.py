@@ -137,6 +137,8 @@ CASES = {
                eds(ports=['Port1 = TCP, "A", "20 F5 24 01", 2;'])),
     "EDS347": (eds(modular=["Width = 1;", "Rack1 = 65535,12,1,1,1,,,,1;", "Rack2 = 65535,12,1,1,1,,,,2;" + M]),
                eds(modular=["Width = 1;", "Rack1 = 65535,12,1,1,1,,,,1;", "Rack2 = 65535,12,2,1,1,,,,2;"])),
+    "EDS349": (eds(assembly=[ASSEM_IN, 'Assem101 = "Path","",4,,,,32,"20 04 25 64 00 30 03";' + M]),
+               eds(assembly=[ASSEM_IN, 'Assem101 = "Path","",4,,,,32,"20 04 25 00 64 00 30 03";'])),
     "EDS348": (eds(modular=["Width = 1;", "Rack1 = 65535,12,1,1,1,,,,1;", 'Query = "20 04 24 07 30 03",1,2,"FF";' + M]),
                eds(modular=["Width = 1;", "Rack1 = 65535,12,1,1,1,,,,0;", 'Query = "20 04 24 07 30 03",1,2,"FF";'])),
 }

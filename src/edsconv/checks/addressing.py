@@ -20,6 +20,7 @@ from edsconv.checks.addressing_rules import (
     LINK_SIZE_WITHOUT_PATH,
     NON_LOGICAL_SEGMENT,
     PACKED_CONNECTION_PATH,
+    PACKED_MEMBER_PATH,
     PARAM_INSTANCE_MISMATCH,
     PORT_1_NOT_BACKPLANE,
     PORT_TYPE_VENDOR_ID,
@@ -146,24 +147,35 @@ def _field(entry: Entry | None, index: int):
     return entry
 
 
-def _path_text(path: tuple[PathItem, ...]) -> str:
-    return " ".join(str(item) for item in path)
+def _path_text(path: object) -> str:
+    return " ".join(str(item) for item in path) if isinstance(path, tuple) else str(path)
 
 
 # --- paths ---------------------------------------------------------------------------------
 
 
-@check(PACKED_CONNECTION_PATH)
-def connection_paths_padded(ctx: Context) -> Iterator[Diagnostic]:
-    """C.4.1.4.9.13: a connection path uses the padded path notation."""
+def _packed(path: object) -> Segment | None:
+    """The first 16- or 32-bit logical segment of ``path`` written without its pad byte."""
+    return next((segment for segment in segments(path) if segment.packed), None) if isinstance(path, tuple) else None
+
+
+@check(PACKED_CONNECTION_PATH, PACKED_MEMBER_PATH)
+def packed_paths(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.9.13: a connection path uses the padded path notation; a packed member path is allowed
+    (C.4.1.4.8), and information for the tools that refuse it."""
     for connection in ctx.device.connections.values():
-        if not isinstance(connection.path, tuple):
-            continue
-        packed = next((segment for segment in segments(connection.path) if segment.packed), None)
+        packed = _packed(connection.path)
         if packed is not None:
             yield ctx.at(PACKED_CONNECTION_PATH, f"{connection.keyword}: path \"{_path_text(connection.path)}\" has a "
                          f"16- or 32-bit logical segment at byte {packed.start} without its pad byte; write the "
                          "padded EPATH (a 0x00 after the segment byte)", _field(connection.entry, _CONNECTION_PATH))
+    for assembly in ctx.device.assemblies.values():
+        for member in assembly.members:
+            packed = _packed(member.reference)
+            if packed is not None:
+                yield ctx.at(PACKED_MEMBER_PATH, f"{assembly.keyword}: member path \"{_path_text(member.reference)}\" "
+                             f"is packed at byte {packed.start}; the text allows it, but some tools refuse it",
+                             _field(assembly.entry, member.field_index + 1))
 
 
 #: Segment types an assembly path (logical) and a member path (logical or data) may hold (C.4.1.4.8).

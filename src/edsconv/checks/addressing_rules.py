@@ -12,7 +12,6 @@ ERROR, WARNING = Severity.ERROR, Severity.WARNING
 
 PACKED_CONNECTION_PATH = rule(
     "EDS328", ERROR, "C.4.1.4.9.13", "A connection path is not written in the padded EPATH notation",
-    import_blocking=True,
     explanation="""
         A connection path (ConnectionN field 15) "shall be entered as a CIP Path (EPATH),
         using the padded path notation" (C.4.1.4.9.13): a 16- or 32-bit logical segment
@@ -20,11 +19,11 @@ PACKED_CONNECTION_PATH = rule(
         a 0x00 pad byte and then its value, so that every segment is a whole number of
         16-bit words. Here the value follows the segment byte directly (the packed
         notation). Port, network and data segments are walked over; the walk stops where
-        a keyword or a `[ParamN]` stands for a segment byte. Rockwell's import refuses
-        packed EPATHs.
+        a keyword or a `[ParamN]` stands for a segment byte.
 
-        Assembly member paths are not checked: C.4.1.4.8 asks only that they consist of
-        logical or data segments (EDS341), not the padded notation.
+        Assembly member paths are not held to it: C.4.1.4.8 asks only that they consist
+        of logical or data segments (EDS341), not the padded notation (EDS349 says where a
+        tool refuses a packed one).
     """,
     bad='`Connection1 = ..., "20 04 25 97 00 2C 96 2C 64";` (a 16-bit instance, packed)',
     good='`Connection1 = ..., "20 04 25 00 97 00 2C 96 2C 64";`',
@@ -138,5 +137,20 @@ QUERY_NOT_SLOT_0 = rule(
     """,
     bad="`Rack1 = 65535, 101, 1, 1, 1,,,, 1, 2;` and a `Query` entry",
     good="`Rack1 = 65535, 101, 1, 1, 1,,,, 0;` and a `Query` entry",
+    labels=TRIGGERS,
+)
+PACKED_MEMBER_PATH = rule(
+    "EDS349", Severity.INFO, "C.4.1.4.8", "An assembly member path is written packed (no pad bytes)",
+    import_blocking=True,
+    explanation="""
+        A Member Reference path has a 16- or 32-bit logical segment whose value follows the
+        segment byte without the 0x00 pad byte (the packed notation). The text allows it:
+        C.4.1.4.8 asks of a member path only logical or data segments, and the padded
+        notation of C.4.1.4.9.13 is the connection path's (EDS328). Information only; it
+        is marked import-blocking because Rockwell's documented import checks refuse packed
+        EPATH members ("packed" read as the CIP term for the pad-less encoding).
+    """,
+    bad='`Assem101 = "Path","",4,,,,32,"20 04 25 64 00 30 03";`',
+    good='`Assem101 = "Path","",4,,,,32,"20 04 25 00 64 00 30 03";`',
     labels=TRIGGERS,
 )

@@ -13,6 +13,7 @@ import pytest
 
 import edsconv
 from conftest import SHARED_REAL
+from edsconv.model.values import StringIMember
 
 
 def build(text: str):
@@ -49,6 +50,13 @@ def test_a_string_with_one_reading_keeps_it_marked(entry, code, attribute, expec
     device, _ = build(f"[Device]\n{entry}\n")
     assert getattr(device.identity, attribute) == expected
     assert device.erroneous == {("Device", "ProdName", 0): code}
+
+
+def test_a_stringi_keeps_its_one_reading():
+    device, _ = build('[Params]\nParam1 = 0,,,0x0000,0xC7,2,"Speed","","",0,100,0,,,,,,,,,,'
+                      '{1, {"eng",0xD0,4,"Speed\\x00"}};\n')
+    assert device.parameters["Param1"].international_name == (StringIMember("eng", 0xD0, 4, "Speed\x00"),)
+    assert device.erroneous == {("Params", "Param1", 21): "EDS117"}
 
 
 def test_a_date_with_one_reading_keeps_it_and_a_warning_is_not_marked():

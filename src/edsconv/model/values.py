@@ -504,26 +504,41 @@ class StringIMember:
     text: str
 
 
+def _read(notes: list[ValueNote], convert, *args):
+    """``convert(*args)``; a value with one reading is kept and its ValueNote collected in ``notes``."""
+    try:
+        return convert(*args)
+    except ValueNote as note:
+        notes.append(note)
+        return note.value
+
+
 def to_stringi(value: Value) -> tuple[StringIMember, ...]:
-    """STRINGI: ``{n, {"eng", 0xD0, 4, "text"}, ...}`` (C.4.1.3.5)."""
+    """STRINGI: ``{n, {"eng", 0xD0, 4, "text"}, ...}`` (C.4.1.3.5). A part with one reading (a text
+    with a control character, a number with leading zeros) leaves the STRINGI one reading too."""
     if not isinstance(value, Group) or not value.fields or value.fields[0].value is None:
         raise ValueProblem(BAD_STRINGI, "a STRINGI is a brace group starting with the number of languages")
-    count = to_integer(value.fields[0].value, "USINT")
+    notes: list[ValueNote] = []
+    count = _read(notes, to_integer, value.fields[0].value, "USINT")
     members = []
     for member_field in value.fields[1:]:
         member = member_field.value
         if not isinstance(member, Group) or len(member.fields) != 4 or any(f.value is None for f in member.fields):
             raise ValueProblem(BAD_STRINGI, "each STRINGI language is {\"lang\", type, charset, \"text\"}")
         language, type_code, charset, text = (f.value for f in member.fields)
-        language_text = to_text(language)
+        language_text = _read(notes, to_text, language)
         if len(language_text) != 3:
             raise ValueProblem(BAD_STRINGI, f"language code {language_text!r} is not three letters (ISO 639-2/T)")
-        code = to_integer(type_code, "USINT")
+        code = _read(notes, to_integer, type_code, "USINT")
         if code not in tables.STRINGI_STRING_TYPES:
             raise ValueProblem(BAD_STRINGI, f"0x{code:02X} is not a STRING, STRING2, STRINGN or SHORT_STRING code")
-        members.append(StringIMember(language_text, code, to_integer(charset, "UINT"), to_text(text)))
+        members.append(StringIMember(language_text, code, _read(notes, to_integer, charset, "UINT"),
+                                     _read(notes, to_text, text)))
     if count != len(members):
         raise ValueProblem(BAD_STRINGI, f"the STRINGI declares {count} languages but lists {len(members)}")
+    if notes:
+        worst = max(notes, key=lambda note: note.rule.severity)
+        raise ValueNote(worst.rule, worst.message, tuple(members), clause=worst.clause, reported=worst.reported)
     return tuple(members)
 
 

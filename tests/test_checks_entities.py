@@ -233,6 +233,12 @@ def test_lint_reports_a_module_member_list_beside_a_field_of_its_pair(members):
     assert found(good, "EDS406") == []
 
 
+def test_module_member_list_in_a_reserved_field_is_one_fault_one_code():
+    # Figure C.15 prints ModuleMemberList at field 6, a reserved field: EDS406, not EDS210 as well
+    text = eds(assembly=[ASSEM_IN, 'ProxyAssem1 = "Module data",,,,,ModuleMemberList;' + M])
+    assert found(text, "EDS406") == [marked_line(text)] and found(text, "EDS210") == []
+
+
 def test_legal_slots_of_another_chassis_are_not_bounded_by_this_one():
     # Rack1 names product 2 (this file is product 1): its slots are that chassis'
     text = eds(modular=["DefineSlotsInRack = 4;", "Width = 1;", "Rack1 = 65535,12,2,1,1,,,,7,8;"])

@@ -370,7 +370,8 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
                                                  f"defines {spec.max_fields} (later fields kept)", extra)
         for index, item in enumerate(entry.fields):
             field_spec = spec.field_at(index + 1)
-            if field_spec is not None and field_spec.presence is RESERVED and item.value is not None:
+            if field_spec is not None and field_spec.presence is RESERVED and item.value is not None \
+                    and item.raw != tables.MODULE_MEMBER_LIST_KEYWORD:  # EDS406 says what is wrong with it
                 yield ctx.at(RESERVED_FIELD_SET, f"{entry.keyword} field {index + 1} is reserved and shall be "
                                                  f"empty (Table {field_spec.table}); {item.raw or 'its value'} "
                                                  f"is ignored", item)

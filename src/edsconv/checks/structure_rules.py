@@ -176,7 +176,8 @@ RESERVED_FIELD_SET = rule(
     explanation="""
         A reserved field is not empty: fields 5 and 6 of `AssemN` and `PortN`, fields
         6-8 of `RackN`. Tools ignore the value. In an `AssemN` it often means the
-        member pairs start two fields too early. A warning, not an error: Table C.20 and
+        member pairs start two fields too early (a `ModuleMemberList` there is EDS406). A
+        warning, not an error: Table C.20 and
         C.26 say "shall be empty" (Table C.25 only "Not Used"), but 8 of the 61 real files
         write 0 in a PortN's field 5 (OpENer-based files and the ifm AL1322), and tools
         ignore it.

@@ -465,7 +465,7 @@ def string_flaw(value: String) -> tuple[Rule, str] | None:
     if control is not None:
         return CONTROL_CHARACTER, f"the string holds the control character 0x{ord(control.group()):02X}; " \
                                   "write it as an escape sequence (Table C.4) or leave it out"
-    if value.text.endswith("\x00"):
+    if "\\x00" in value.parts[-1] and value.text.endswith("\x00"):
         return NULL_TERMINATOR, "the string ends with \\x00; EDS strings have no null terminator"
     return None
 

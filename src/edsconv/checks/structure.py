@@ -141,7 +141,7 @@ def section_placement(ctx: Context) -> Iterator[Diagnostic]:
     """[File] is the first section, [Device] the one right after it (Table C.3 placement 1, 2)."""
     order = [section.name for section in ctx.eds.sections]
     placed = sorted((s for s in tables.SECTIONS.values() if s.placement), key=lambda s: s.placement)
-    for previous, spec in zip([None, *placed], placed):
+    for previous, spec in zip([None, *placed], placed, strict=False):
         if spec.name not in order:
             continue  # EDS201 reports it
         index = order.index(spec.name)

@@ -80,7 +80,8 @@ NOT_ASCII = rule(
     explanation=r"""
         An EDS is ASCII; edsconv reads UTF-8, Windows-1252 and Latin-1 all the same and
         names the first line that is not ASCII, and reads UTF-16 and UTF-32 files by their
-        byte order mark, but other tools may show or reject such text. Write the text in a UNICODE string with `\u` escapes instead.
+        byte order mark, but other tools may show or reject such text. Write the text in a
+        UNICODE string with `\u` escapes instead.
         A warning, not an error: C.4.1.3.2 defines its "8-bit ASCII" by Row 00 of
         ISO/IEC 10646-1, which holds the Latin-1 characters too, while it lists 32 to 126
         as the valid values; 3 of the 61 real files hold such characters, and tools read

@@ -471,7 +471,7 @@ def string_flaw(value: String) -> tuple[Rule, str] | None:
 
 
 # https postdates the 2003 text and is what every vendor site uses now.
-_URL = re.compile(r"(?i)(?:%s|https)://" % "|".join(tables.EDS_URL_SCHEMES))
+_URL = re.compile(rf"(?i)(?:{'|'.join(tables.EDS_URL_SCHEMES)}|https)://")
 
 
 #: RFC 1738 section 2.2: characters a URL holds only encoded ("%" only as the start of "%XX").

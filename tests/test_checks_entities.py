@@ -27,10 +27,10 @@ def connection(n=1, trigger="0x04010002", parameters="0x44640405", rpi="Param1",
     return CONNECTION.format(n=n, trigger=trigger, parameters=parameters, rpi=rpi, size=size, name=name) + mark
 
 
-FIRST_CONNECTION = connection()
+DEFAULT_CONNECTIONS = (connection(),)
 
 
-def eds(params=(PARAM_RPI,), groups=(), assembly=(ASSEM_IN,), connections=(FIRST_CONNECTION,), ports=(), modular=(),
+def eds(params=(PARAM_RPI,), groups=(), assembly=(ASSEM_IN,), connections=DEFAULT_CONNECTIONS, ports=(), modular=(),
         param_class=()):
     """A minimal valid EtherNet/IP EDS with the given entries, one per line."""
     lines = [

@@ -39,7 +39,7 @@ REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if
 
 def round_trip(device: Device, stem: str = "x") -> Device:
     """Device -> both profiles (validated) -> Device -> canonical EDS text -> Device."""
-    from edsconv.xml.device import read_device_profile
+    from edsconv.xml.device_read import read_device_profile
 
     header = Header.derive(device, stem)
     device_xml, commnet_xml = profile_documents(device, header, stem)  # raises if either is invalid

@@ -23,7 +23,7 @@ from edsconv.report import all_rules
 from edsconv.xml import validate
 from edsconv.xml.common import EDSCONV
 from edsconv.xml.convert import device_from_profiles
-from edsconv.xml.device import read_device_profile
+from edsconv.xml.device_read import read_device_profile
 from edsconv.xml.safe import parse_xml, read_xml
 
 TESTS = Path(__file__).resolve().parent

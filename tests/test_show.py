@@ -284,7 +284,8 @@ def test_exit_codes_as_a_process(tmp_path: Path):
 
 
 def test_rich_is_imported_only_by_the_text_output():
-    code = ("import sys, edsconv.describe, edsconv.cli.show, edsconv.cli; assert 'rich' not in sys.modules, 'rich imported'")
+    code = ("import sys, edsconv.describe, edsconv.cli.show, edsconv.cli; "
+            "assert 'rich' not in sys.modules, 'rich imported'")
     assert subprocess.run([sys.executable, "-c", code], capture_output=True, timeout=60).returncode == 0
 
 

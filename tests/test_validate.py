@@ -80,7 +80,8 @@ def test_schema_option_forces_a_schema():
     path = CORPUS / "adsnet-device" / "valid-complete.xml"
     result = run("--schema", "FL-net_Device_Profile.xsd", "--format", "json", str(path))
     report = json.loads(result.output)["files"][0]
-    assert (result.return_value, report["profile"], report["schema"]) == (1, "flnet-device", "FL-net_Device_Profile.xsd")
+    assert (result.return_value, report["profile"], report["schema"]) == (
+        1, "flnet-device", "FL-net_Device_Profile.xsd")
     assert run("--schema", "adsnet-device", str(path)).return_value == 0
 
 

@@ -132,8 +132,8 @@ def _lint_parallel(files: list[str], jobs: int, selection: Selection) -> list[Fi
     except BrokenProcessPool as error:
         # A worker died (killed, out of memory): every file not answered for is reported, the rest kept.
         message = f"the worker process checking this file died ({error}); please report it"
-        reports = [r or _failed(f, message, selection) for f, r in zip(files, reports)]
-    return reports
+        reports = [r or _failed(f, message, selection) for f, r in zip(files, reports, strict=True)]
+    return [r for r in reports if r is not None]  # every file has its report by now
 
 
 def _size(path: str) -> int:

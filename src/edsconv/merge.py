@@ -291,8 +291,10 @@ class _Merger:
             item = proxy.fields[position]
             if _is_word(item, MODULE):
                 deferred = self._deferred(proxy, proxied, position, MODULE)
-                ok = ok and deferred is not None
-                combined.append(deferred)
+                if deferred is None:
+                    ok = False
+                else:
+                    combined.append(deferred)
             else:
                 combined.append(_copy_field(item))
         return combined if ok else None
@@ -329,8 +331,7 @@ class _Merger:
         fields = self._plain(proxy, proxied, range(len(proxy.fields)))
         if fields is None:
             return None
-        _, number = tables.split_numbered(proxy.keyword)
-        adder = self.proxy.get(("ProxyParamSizeAdder", number))
+        adder = self.proxy.get(("ProxyParamSizeAdder", tables.instance_number(proxy.keyword)))
         if adder is not None:
             self._add_sizes(fields, adder)
         return fields
@@ -375,7 +376,7 @@ class _Merger:
         return tables.DATA_TYPES_BY_CODE.get(code) or tables.OBSOLETE_DATA_TYPE_IDS.get(code)
 
     @staticmethod
-    def _sum(value: Value, addend: Value, data_type: tables.DataType | None) -> str:
+    def _sum(value: Value | None, addend: Value | None, data_type: tables.DataType | None) -> str:
         """The spelling of ``value + addend``, or ``"!reason"``."""
         from edsconv.model.values import ValueNote, ValueProblem, convert
 
@@ -383,6 +384,8 @@ class _Merger:
             return "!the parameter's data type is not a number type"
         numbers = []
         for item in (value, addend):
+            if item is None:
+                return "!an empty field"
             try:
                 numbers.append(convert(item, data_type.name))
             except ValueNote as note:
@@ -396,15 +399,15 @@ class _Merger:
             return repr(float(total))
         if isinstance(value, Scalar) and value.kind is ValueKind.HEX:
             digits = len(value.raw) - 2
-            return f"0x{total & ((1 << (8 * data_type.size)) - 1):0{digits}X}"
+            return f"0x{total & ((1 << (8 * (data_type.size or 0))) - 1):0{digits}X}"
         return str(total)
 
     # Assembly
 
     def _assem(self, proxy: Entry, proxied: Entry | None) -> list[Field] | None:
         faults = list(module_member_list_faults(proxy))
-        for item, message in faults:
-            self.report(BAD_MODULE_MEMBER_LIST, f"{proxy.keyword} {message}", self.adapter, item)
+        for place, message in faults:
+            self.report(BAD_MODULE_MEMBER_LIST, f"{proxy.keyword} {message}", self.adapter, place)
         if faults:
             return None
         fields = self._plain(proxy, proxied, range(min(ASSEM_HEADER_FIELDS, len(proxy.fields))))
@@ -414,7 +417,8 @@ class _Merger:
         for start in range(0, len(members), 2):
             size, reference = members[start], members[start + 1] if start + 1 < len(members) else None
             if _is_word(size, MODULE_MEMBER_LIST) or _is_word(reference, MODULE_MEMBER_LIST):
-                expanded = self._member_list(proxy, proxied, size if _is_word(size, MODULE_MEMBER_LIST) else reference)
+                listed = size if reference is None or _is_word(size, MODULE_MEMBER_LIST) else reference
+                expanded = self._member_list(proxy, proxied, listed)
                 ok = ok and expanded is not None
                 combined.extend(expanded or ())
                 continue
@@ -427,7 +431,7 @@ class _Merger:
             combined.append(_copy_field(size))
             if reference is not None:
                 combined.append(_copy_field(reference))
-        return [*fields, *combined] if ok else None
+        return [*fields, *combined] if ok and fields is not None else None
 
     def _member_list(self, proxy: Entry, proxied: Entry | None, item: Field) -> list[Field] | None:
         if proxied is None:
@@ -464,7 +468,7 @@ def module_member_list_faults(entry: Entry) -> Iterator[tuple[Field, str]]:
         position = ASSEM_HEADER_FIELDS + start
         if _is_word(size, MODULE_MEMBER_LIST) or _is_word(reference, MODULE_MEMBER_LIST):
             partner = reference if _is_word(size, MODULE_MEMBER_LIST) else size
-            if not _empty(partner):
+            if partner is not None and partner.value is not None:
                 yield partner, f"fields {position + 1}-{position + 2}: {MODULE_MEMBER_LIST} stands in place of the " \
                                f"whole pair; the other field shall be empty, not {partner.raw or 'a group'}"
 

@@ -15,7 +15,7 @@ import os
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePath
-from typing import Protocol
+from typing import Any, Protocol
 from urllib.parse import quote
 
 from edsconv.diagnostics import Diagnostic, Rule, Severity, all_rules
@@ -121,7 +121,7 @@ def sarif_document(reports: Sequence[Report], root: Path | None = None) -> dict:
             physical: dict = {"artifactLocation": location}
             if d.line > 0:
                 physical["region"] = _region(d)
-            result = {
+            result: dict[str, Any] = {
                 "ruleId": d.code,
                 "level": _SARIF_LEVEL[d.severity],
                 "message": {"text": d.message},

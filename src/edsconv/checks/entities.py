@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import TypeGuard
 
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
@@ -71,6 +72,8 @@ from edsconv.model import (
     Reference,
 )
 from edsconv.model.build import iter_references
+from edsconv.model.device import field_written as _written
+from edsconv.model.device import is_integer as _is_int
 from edsconv.model.values import PathItem
 
 
@@ -81,16 +84,7 @@ def _node(entry: Entry | None, index: int):
     return entry
 
 
-def _written(entry: Entry | None, index: int) -> bool:
-    """True when field ``index`` holds a value (converted or not)."""
-    return entry is not None and index < len(entry.fields) and entry.fields[index].value is not None
-
-
-def _is_int(value) -> bool:
-    return isinstance(value, int) and not isinstance(value, bool)
-
-
-def _is_number(value) -> bool:
+def _is_number(value: object) -> TypeGuard[int | float]:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
 
@@ -130,7 +124,7 @@ def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
                          _node(ref.entry, ref.field_index), clause=_reference_clause(ref))
     for connection in ctx.device.connections.values():
         for item in _path_references(connection):
-            if ctx.device.resolve(item.reference) is None:
+            if ctx.device.resolve(item.reference or "") is None:
                 yield ctx.at(UNDEFINED_REFERENCE, f"{connection.keyword}: the path names [{item.reference}], "
                              "which is not defined", _node(connection.entry, 14), clause=_PATH_CLAUSE)
 
@@ -160,7 +154,7 @@ def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
                                  f"{data_type.name}; it shall evaluate to {' or '.join(allowed)}",
                                  _node(connection.entry, index), clause=tables.CONNECTION_FIELDS[index].clause)
         for item in _path_references(connection):
-            target = ctx.device.resolve(item.reference)
+            target = ctx.device.resolve(item.reference or "")
             if isinstance(target, Parameter) and target.data_type is not None \
                     and target.data_type.name not in _PATH_TYPES:
                 yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: the path names {item.reference}, a "
@@ -354,21 +348,19 @@ def descriptors(ctx: Context) -> Iterator[Diagnostic]:
                                   tables.ASSEM_DESCRIPTOR_BITS, _node(assembly.entry, 3))
 
 
-def _type_bounds(data_type: tables.DataType | None) -> tuple[object, object]:
+def _type_bounds(data_type: tables.DataType) -> tuple[float | None, float | None]:
     """The bounds of a data type's values: REAL and LREAL hold -INFINITY and INFINITY too (C.4.1.3.10)."""
-    if data_type is None:
-        return None, None
     if data_type.kind == "real":
         return -math.inf, math.inf
     return data_type.minimum, data_type.maximum
 
 
-def _bounds(parameter: Parameter) -> tuple[object, object] | None:
-    """Effective (minimum, maximum) of a numeric parameter: an absent bound is the
-    type's own (Table C.17 note b); None when a bound is unusable."""
-    type_minimum, type_maximum = _type_bounds(parameter.data_type)
+def _bounds(parameter: Parameter, data_type: tables.DataType) -> tuple[float, float] | None:
+    """Effective (minimum, maximum) of a numeric parameter of ``data_type``: an absent bound
+    is the type's own (Table C.17 note b); None when a bound is unusable."""
+    type_minimum, type_maximum = _type_bounds(data_type)
     entry = parameter.entry
-    bounds = []
+    bounds: list[float] = []
     for value, index, type_bound in ((parameter.minimum, 9, type_minimum), (parameter.maximum, 10, type_maximum)):
         if _is_number(value):
             bounds.append(value)
@@ -394,7 +386,7 @@ def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if rule_.meaning != "value":
             continue
-        bounds = _bounds(parameter)
+        bounds = _bounds(parameter, data_type)
         if bounds is None:
             continue
         low, high = bounds
@@ -485,21 +477,6 @@ def enum_descriptor_bits(ctx: Context) -> Iterator[Diagnostic]:
 # --- assemblies ------------------------------------------------------------------------
 
 
-def _member_bits(assembly: Assembly, member: AssemblyMember) -> int | None:
-    """A member's size in bits; an empty Member Size takes the referenced
-    Param's Data Size or Assem's Size (in bytes) times 8. None when unknown."""
-    if _is_int(member.size):
-        return member.size
-    if _written(assembly.entry, member.field_index):
-        return None  # written but not convertible: EDS1xx says why
-    target = member.reference.target if isinstance(member.reference, Reference) else None
-    if isinstance(target, Parameter) and _is_int(target.data_size):
-        return target.data_size * 8
-    if isinstance(target, Assembly) and _is_int(target.size):
-        return target.size * 8
-    return None
-
-
 @check(EMPTY_MEMBER, ASSEMBLY_SIZE_MISMATCH, ASSEMBLY_NOT_WHOLE_BYTES, MODULE_IN_MEMBER)
 def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
     for assembly in ctx.device.assemblies.values():
@@ -516,7 +493,7 @@ def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
             if member.reference == MODULE:
                 yield ctx.at(MODULE_IN_MEMBER, f"{assembly.keyword}: 'Module' is not allowed as a Member Reference; "
                              "use ModuleMemberList in place of the pair", _node(entry, reference_index))
-            bits = _member_bits(assembly, member)
+            bits = ctx.device.member_bits(assembly, member)
             total = total + bits if total is not None and bits is not None else None
         if total is None or assembly.module_member_list or not assembly.members:
             continue
@@ -615,13 +592,14 @@ def slot_masks(ctx: Context) -> Iterator[Diagnostic]:
 
 @check(DUPLICATE_PORT_NUMBER, UNKNOWN_PORT_TYPE)
 def ports(ctx: Context) -> Iterator[Diagnostic]:
-    type_spec = tables.entry_spec("Port", "Port1").fields[0]
+    type_spec = tables.known_entry("Port", "Port1").fields[0]
     first_use: dict[int, int] = {}
     for port in ctx.device.ports:
         if isinstance(port.type_name, str) and port.type_name not in type_spec.choices \
                 and not (type_spec.vendor_keywords and tables.is_vendor_keyword(port.type_name)):
             yield ctx.at(UNKNOWN_PORT_TYPE, f"Port{port.number}: port type {port.type_name!r} is not one of "
-                         f"{', '.join(type_spec.choices)} nor a <VendorID>_<keyword>", _node(port.entry, 0))
+                         f"{', '.join(map(str, type_spec.choices))} nor a <VendorID>_<keyword>",
+                         _node(port.entry, 0))
         if _is_int(port.port_number):
             if port.port_number in first_use:
                 yield ctx.at(DUPLICATE_PORT_NUMBER, f"Port{port.number}: port number {port.port_number} is already "
@@ -667,13 +645,14 @@ def modular(ctx: Context) -> Iterator[Diagnostic]:
     if modular.width == 0:
         yield ctx.at(WIDTH_ZERO, "Width is 0; a module consumes at least one slot", _modular_entry(ctx.device, "Width"))
     if modular.query is not None:
-        query_spec = tables.entry_spec("Modular", "Query")
+        query_spec = tables.known_entry("Modular", "Query")
         entry = _modular_entry(ctx.device, "Query")
         service_spec, size_spec = query_spec.fields[1], query_spec.fields[2]
         if _is_int(modular.query.service) and modular.query.service not in service_spec.choices:
             yield ctx.at(QUERY_FIELD_VALUE, f"Query: service {modular.query.service} is neither 1 (Get_Attributes_All)"
                          " nor 14 (Get_Attribute_Single)", _node(entry, 1))
-        low, high = size_spec.value_range
-        if _is_int(modular.query.id_size) and not low <= modular.query.id_size <= high:
+        low, high = size_spec.value_range or (None, None)
+        if _is_int(modular.query.id_size) and _is_int(low) and _is_int(high) \
+                and not low <= modular.query.id_size <= high:
             yield ctx.at(QUERY_FIELD_VALUE, f"Query: ID size {modular.query.id_size} is outside {low} to {high}",
                          _node(entry, 2))

@@ -140,8 +140,8 @@ def required_sections(ctx: Context) -> Iterator[Diagnostic]:
 def section_placement(ctx: Context) -> Iterator[Diagnostic]:
     """[File] is the first section, [Device] the one right after it (Table C.3 placement 1, 2)."""
     order = [section.name for section in ctx.eds.sections]
-    placed = sorted((s for s in tables.SECTIONS.values() if s.placement), key=lambda s: s.placement)
-    for previous, spec in zip([None, *placed], placed, strict=False):
+    placed = sorted((s for s in tables.SECTIONS.values() if s.placement), key=lambda s: s.placement or 0)
+    for previous, spec in zip([None, *placed], placed, strict=False):  # each spec after the one before
         if spec.name not in order:
             continue  # EDS201 reports it
         index = order.index(spec.name)
@@ -326,7 +326,7 @@ def numbering(ctx: Context) -> Iterator[Diagnostic]:
             for entry in section.entries:
                 spec = tables.entry_spec(name, entry.keyword)
                 if spec is not None and spec.sequential:
-                    families.setdefault(spec, {}).setdefault(tables.split_numbered(entry.keyword)[1], entry)
+                    families.setdefault(spec, {}).setdefault(tables.instance_number(entry.keyword), entry)
         for spec, entries in families.items():
             expected = 1
             for number in sorted(entries):
@@ -346,17 +346,17 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
     """Required fields present and not empty; no fields beyond the layout; reserved fields empty."""
     for entry, spec in _specified_entries(ctx):
         missing = []
-        for field_spec in spec.fields:
-            if field_spec.presence is not REQUIRED or spec.keyword in _PROXIED_FAMILIES:
+        for required in spec.fields:
+            if required.presence is not REQUIRED or spec.keyword in _PROXIED_FAMILIES:
                 continue
-            if field_spec.repeats and (spec.keyword in _COUNTED_TAILS or field_spec is not spec.repeating[0]):
+            if required.repeats and (spec.keyword in _COUNTED_TAILS or required is not spec.repeating[0]):
                 continue  # a required repeating tail needs its first field (a RackN one Legal Slot)
-            index = field_spec.number - 1
+            index = required.number - 1
             if index >= len(entry.fields):
-                missing.append(f"{field_spec.number} ({field_spec.name})")
+                missing.append(f"{required.number} ({required.name})")
             elif entry.fields[index].value is None:
-                yield ctx.at(REQUIRED_FIELD_EMPTY, f"{entry.keyword} field {field_spec.number} "
-                                                   f"({field_spec.name}) is required but empty", entry.fields[index])
+                yield ctx.at(REQUIRED_FIELD_EMPTY, f"{entry.keyword} field {required.number} "
+                                                   f"({required.name}) is required but empty", entry.fields[index])
         if missing:
             yield ctx.at(REQUIRED_FIELD_EMPTY, f"{entry.keyword} lacks required field{'s' if len(missing) > 1 else ''}"
                                                f" {', '.join(missing)}", entry)

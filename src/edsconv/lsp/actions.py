@@ -71,8 +71,8 @@ def suppression(analysis: Analysis, code: str, line: int, column: int) -> Fix | 
         end = len(text) + 1
         return Fix(title, (Edit(target, end, target, end, f" $ {SUPPRESSION.format(codes=code)}"),))
     indent = text[:len(text) - len(text.lstrip())]
-    line = f"{indent}$ {SUPPRESSION.format(codes=code)}{analysis.eds.newline}"
-    return Fix(title, (Edit(target, 1, target, 1, line),))
+    comment_line = f"{indent}$ {SUPPRESSION.format(codes=code)}{analysis.eds.newline}"
+    return Fix(title, (Edit(target, 1, target, 1, comment_line),))
 
 
 def _comments_on(owner: Entry | Section | None, line: int) -> list[Comment]:

@@ -20,6 +20,7 @@ from __future__ import annotations
 import datetime
 import re
 import struct
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
@@ -241,7 +242,9 @@ class Revision:
         return f"{self.major}.{self.minor}"
 
 
-def _describe(value: Value) -> str:
+def _describe(value: Value | None) -> str:
+    if value is None:
+        return "an empty field"
     if isinstance(value, Group):
         return "a brace group"
     if isinstance(value, String):
@@ -249,7 +252,7 @@ def _describe(value: Value) -> str:
     return repr(value.raw)
 
 
-def _scalar(value: Value, expected: str) -> str:
+def _scalar(value: Value | None, expected: str) -> str:
     if not isinstance(value, Scalar):
         raise ValueProblem(WRONG_KIND, f"expected {expected}, found {_describe(value)}")
     return value.raw
@@ -266,7 +269,7 @@ def _notation_clause(data_type: tables.DataType) -> str:
     return data_type.source if data_type.source.startswith("C.4.1.3") else "C.4.1.3"
 
 
-def to_integer(value: Value, type_name: str) -> int:
+def to_integer(value: Value | None, type_name: str) -> int:
     """USINT ... ULINT, SINT ... LINT, BYTE ... LWORD, BOOL and the CIP time types.
 
     Decimal without leading zeros; ``0x`` hexadecimal with at most the digits the
@@ -276,7 +279,7 @@ def to_integer(value: Value, type_name: str) -> int:
     data_type = tables.DATA_TYPES_BY_NAME[type_name]
     clause = _notation_clause(data_type)
     raw = _scalar(value, f"an integer ({type_name})")
-    kind = value.kind
+    kind = Scalar(raw).kind
     if kind is ValueKind.HEX:
         digits = raw[2:]
         number = data_type.from_hex(int(digits, 16))
@@ -402,14 +405,18 @@ def to_time(value: Value) -> datetime.time:
     match = _TIME.fullmatch(raw)
     if not match:
         raise ValueProblem(BAD_TIME, f"{raw!r} is not written hh:mm:ss")
-    try:
-        time = datetime.time(int(match["hour"]), int(match["minute"]), int(match["second"]))
-    except ValueError:
-        raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)") from None
+    parts = {name: int(match[name]) for name in tables.EDS_TIME_OF_DAY_LIMITS}
+    if not _within(tables.EDS_TIME_OF_DAY_LIMITS, parts):
+        raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)")
+    time = datetime.time(parts["hour"], parts["minute"], parts["second"])
     if any(len(part) < 2 for part in match.groups()):
         raise ValueNote(BAD_TIME, f"{raw!r}: write hours, minutes and seconds with two digits: "
                         f"{time.isoformat()}", time)
     return time
+
+
+def _within(limits: Mapping[str, tuple[int, int]], values: Mapping[str, int]) -> bool:
+    return all(low <= values[name] <= high for name, (low, high) in limits.items())
 
 
 def to_revision(value: Value) -> Revision:
@@ -424,13 +431,15 @@ def to_revision(value: Value) -> Revision:
     revision = Revision(int(match["major"]), int(match["minor"]))
     if revision == Revision(0, 0):
         raise ValueProblem(BAD_REVISION, "revision 0.0 is invalid")
-    if len(match["major"]) > 1 or len(match["minor"]) > 1:
+    # one digit each: within the limits and without leading zeros
+    if not _within(tables.EDS_REVISION_LIMITS, {"major": revision.major, "minor": revision.minor}) \
+            or len(match["major"]) > 1 or len(match["minor"]) > 1:
         raise ValueNote(REVISION_BEYOND_2003, f"revision {raw}: the 2003 text allows one digit per part "
                         f"(read as major {revision.major}, minor {revision.minor})", revision)
     return revision
 
 
-def to_text(value: Value) -> str:
+def to_text(value: Value | None) -> str:
     """EDS_Char_Array: the characters of a (possibly concatenated) string.
 
     A string with an escape Table C.4 does not define is rejected (C.4.1.3.3.5): no value.
@@ -525,7 +534,7 @@ def to_stringi(value: Value) -> tuple[StringIMember, ...]:
         member = member_field.value
         if not isinstance(member, Group) or len(member.fields) != 4 or any(f.value is None for f in member.fields):
             raise ValueProblem(BAD_STRINGI, "each STRINGI language is {\"lang\", type, charset, \"text\"}")
-        language, type_code, charset, text = (f.value for f in member.fields)
+        language, type_code, charset, text = (f.value or Scalar("") for f in member.fields)  # none is empty
         language_text = _read(notes, to_text, language)
         if len(language_text) != 3:
             raise ValueProblem(BAD_STRINGI, f"language code {language_text!r} is not three letters (ISO 639-2/T)")
@@ -594,7 +603,7 @@ def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]
         name = match["bracketed"] or match["word"]
         if name in tables.PATH_KEYWORDS and not match["bracketed"]:
             items.append(PathItem(keyword=name))
-        elif re.fullmatch(r"(?:Proxy)?Param[1-9][0-9]*", name):
+        elif tables.PATH_REFERENCE_RE.fullmatch(name):
             items.append(PathItem(reference=name, local=bool(match["bracketed"])))
         else:
             raise ValueProblem(BAD_EPATH, f"path {text!r}: {name!r} is neither a byte, [ParamN], ParamN nor "
@@ -604,9 +613,8 @@ def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]
 
 def epath_bytes(items: tuple[PathItem, ...]) -> bytes | None:
     """The bytes of a path made only of bytes; None when it holds substitutions."""
-    if any(item.byte is None for item in items):
-        return None
-    return bytes(item.byte for item in items)
+    data = [item.byte for item in items]
+    return None if None in data else bytes(b for b in data if b is not None)
 
 
 #: Converter of each type name a FieldSpec can give, for the value-only types.

@@ -46,18 +46,15 @@ from edsconv.xml.common import (
     is_xml_text,
     xml_text,
 )
+from edsconv.xml.safe import XmlDocument
 
 #: Connection families in the order the schema's ConnectionDescriptions sequence wants them.
 FAMILIES = ("Connection", "ProxyConnect", "ProxiedConnect")
 
-_N = "[1-9][0-9]{0,4}"
-# The lexical spaces of CIPDataTypes.xsd / ENet_CommNet_Profile.xsd the writer must meet.
-_PARAM_REFERENCE = re.compile(f"(?:Proxy)?Param{_N}(?::[0-9]{{1,2}})*")  # et_ParamReference
-_ASSEM_REFERENCE = re.compile(f"(?:Proxy)?Assem{_N}")  # et_AssemReference
-_PORT_TYPE = re.compile(f"ControlNet|ControlNet_Redundant|TCP|DeviceNet|{_N}_[A-Za-z0-9][A-Za-z0-9_]*")
+_N = tables.INSTANCE_NUMBER
+# The lexical spaces of ENet_CommNet_Profile.xsd the writer must meet.
+_PORT_TYPE = re.compile("|".join((*tables.PORT_TYPE_KEYWORDS, tables.XSD_VENDOR_KEYWORD)))
 _ENTRY_ID = {family: re.compile(f"{family}{_N}") for family in (*FAMILIES, "Port")}
-# What a reader accepts: every reference the model knows (AssemExaN from newer files too).
-_ANY_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
 _ANY_KEYWORD = re.compile(r"(Connection|ProxyConnect|ProxiedConnect|Port)([1-9][0-9]*)")
 _ESCAPE = re.compile(r"\\(\\|u[0-9A-Fa-f]{4})")
 
@@ -129,10 +126,6 @@ def _text_extension(tag: str, text: str, **attributes: str) -> etree._Element:
     return _ext(tag, _escape(text), escaped="true", **attributes)
 
 
-def _reference_text(reference: Reference) -> str:
-    return reference.keyword + (f":{reference.bit}" if reference.bit is not None else "")
-
-
 def _path_text(path: Iterable[PathItem]) -> str:
     return " ".join(str(item) for item in path)
 
@@ -148,8 +141,10 @@ def _schema_text(field: _Field, value: Any) -> str | None:
             return str(value)
         return None
     if isinstance(value, Reference) and field.kind in ("rpi", "size", "format"):
-        text = _reference_text(value)
-        forms = (_PARAM_REFERENCE, _ASSEM_REFERENCE) if field.kind == "format" else (_PARAM_REFERENCE,)
+        text = value.text
+        forms: tuple[re.Pattern[str], ...] = (tables.XSD_PARAM_REFERENCE_RE,)
+        if field.kind == "format":
+            forms += (tables.XSD_ASSEM_REFERENCE_RE,)
         return text if any(form.fullmatch(text) for form in forms) else None
     return None
 
@@ -157,7 +152,7 @@ def _schema_text(field: _Field, value: Any) -> str | None:
 def _value_extension(field: _Field, value: Any) -> etree._Element:
     """edsconv:Value holding a value the field's element cannot."""
     if isinstance(value, Reference):
-        return _ext("Value", _reference_text(value), field=field.tag)
+        return _ext("Value", value.text, field=field.tag)
     if isinstance(value, tuple):
         return _ext("Value", _path_text(value), field=field.tag)
     if isinstance(value, str):
@@ -194,10 +189,10 @@ def _field_content(field: _Field, value: Any, names: set[str], keyword: str) -> 
         if isinstance(value, tuple):
             return _path_text(value), []
         return empty, [_value_extension(field, value)]
-    text = _schema_text(field, value)
-    if text is None:
+    schema_text = _schema_text(field, value)
+    if schema_text is None:
         return empty, [_value_extension(field, value)]
-    return text, []
+    return schema_text, []
 
 
 def _connection_element(connection: Connection, tag: str, names: set[str]) -> etree._Element:
@@ -256,21 +251,24 @@ def _port_fits(port: Port, ids: set[str]) -> bool:
 
 
 def _port_element(port: Port, tag: str, **attributes: str) -> etree._Element:
-    element = etree.Element(tag, id=f"Port{port.number}", **attributes)
+    """A Port, or an edsconv:Port whose children are in the edsconv namespace too: an element without
+    namespace inside an extension would be validated against the schema's global declarations."""
+    namespace = tag[:tag.index("}") + 1] if tag.startswith("{") else ""
+    element = etree.Element(tag, {"id": f"Port{port.number}", **attributes})
     extensions = []
     if port.type_name is not None:
-        etree.SubElement(element, "PortTypeName").text = xml_text(port.type_name)
+        etree.SubElement(element, namespace + "PortTypeName").text = xml_text(port.type_name)
         if not is_xml_text(port.type_name):
             extensions.append(_text_extension("Value", port.type_name, field="PortTypeName"))
     if port.name is not None:
-        etree.SubElement(element, "PortName").text = xml_text(port.name)
+        etree.SubElement(element, namespace + "PortName").text = xml_text(port.name)
         if not is_xml_text(port.name):
             extensions.append(_text_extension("Value", port.name, field="PortName"))
     if port.object_path is not None:
-        etree.SubElement(element, "PortObject").text = _path_text(port.object_path)
+        etree.SubElement(element, namespace + "PortObject").text = _path_text(port.object_path)
     if port.port_number is not None:
-        etree.SubElement(element, "PortNumber").text = str(port.port_number)
-    specific = etree.SubElement(element, "PortSpecific")
+        etree.SubElement(element, namespace + "PortNumber").text = str(port.port_number)
+    specific = etree.SubElement(element, namespace + "PortSpecific")
     specific.extend(_specific_elements(port.specific))
     element.extend(extensions)
     return element
@@ -295,7 +293,8 @@ def _ports(device: Device) -> list[etree._Element]:
 # fixed true), the services that make mandatory attributes readable, and
 # None/false for everything optional ("not declared", not "known absent").
 _GET, _SET, _NONE = "Get", "Set", "None"
-_REQUIRED_MINIMUM = {
+#: tag -> the attribute its children carry, then (child, value) pairs
+_REQUIRED_MINIMUM: dict[str, tuple[Any, ...]] = {
     "ConnectionManager_InstanceOperations": (
         "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
         ("Get_Attribute_List", "false"), ("Set_Attribute_List", "false"), ("Get_Attribute_Single", "false"),
@@ -391,24 +390,28 @@ def commnet_profile(device: Device, header: Header) -> etree._Element:
 
 # --- reading -------------------------------------------------------------------------------
 
+def _all_text(element: etree._Element) -> str:
+    """The text of an element and its descendants (lxml yields str; its stubs say str or bytes)."""
+    return "".join(str(part) for part in element.itertext())
+
+
 class _Reader:
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: Device, document: XmlDocument) -> None:
         self.device = device
+        self.document = document
         self.diagnostics: list[Diagnostic] = []
 
     def report(self, problem: ValueProblem, element: etree._Element) -> None:
-        line = element.sourceline or 0
-        self.diagnostics.append(Diagnostic.of(problem.rule, f"{_describe(element)}: {problem.message}",
-                                              line, 1 if line else 0))
+        self.diagnostics.append(self.document.diagnostic(problem.rule, f"{_describe(element)}: {problem.message}",
+                                                         element))
 
     # values
     @staticmethod
     def reference(text: str) -> Reference:
-        match = _ANY_REFERENCE.fullmatch(text)
-        if match is None:
+        found = Reference.parse(text)
+        if found is None:
             raise ValueProblem(WRONG_KIND, f"{text!r} is neither a number nor a ParamN / AssemN reference")
-        family, number, bit = match.groups()
-        return Reference(f"{family}{number}", family, int(number), bit=int(bit) if bit is not None else None)
+        return found
 
     def number_or_reference(self, text: str) -> int | Reference:
         text = text.strip()
@@ -419,7 +422,7 @@ class _Reader:
         return path_items(text)
 
     def field_value(self, field: _Field, element: etree._Element) -> Any:
-        text = "".join(element.itertext())
+        text = _all_text(element)
         if field.kind == "text":
             return text
         if field.kind == "path":
@@ -432,7 +435,7 @@ class _Reader:
         return self.number_or_reference(text)
 
     def extension_value(self, field: _Field | None, element: etree._Element) -> Any:
-        text = "".join(element.itertext())
+        text = _all_text(element)
         if element.get("escaped") == "true":
             text = _unescape(text)
         if field is None or field.kind == "text" or element.get("type") == "string":
@@ -452,9 +455,10 @@ class _Reader:
                     field = _FIELDS_BY_TAG[child.tag]
                     field.set(connection, self.field_value(field, child))
                 elif child.tag in (EDSCONV + "Module", EDSCONV + "Empty", EDSCONV + "Value"):
-                    field = _FIELDS_BY_TAG.get(child.get("field", ""))
-                    if field is None:
+                    named = _FIELDS_BY_TAG.get(child.get("field", ""))
+                    if named is None:
                         raise ValueProblem(WRONG_KIND, f"field {child.get('field')!r} is not a connection field")
+                    field = named
                     marker = etree.QName(child).localname
                     value = MODULE if marker == "Module" else None if marker == "Empty" else \
                         self.extension_value(field, child)
@@ -474,13 +478,12 @@ class _Reader:
                 continue
             keyword = child.get("id", "")
             match = _ANY_KEYWORD.fullmatch(keyword)
-            family = match[1] if match else ""
-            if family not in FAMILIES or (child.tag in FAMILIES and child.tag != family):
+            if match is None or match[1] not in FAMILIES or (child.tag in FAMILIES and child.tag != match[1]):
                 self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a {etree.QName(child).localname}N "
                                          "keyword"), child)
                 continue
             if keyword not in found:
-                found[keyword] = self.connection(child, family, keyword, int(match[2]))
+                found[keyword] = self.connection(child, match[1], keyword, int(match[2]))
         for keyword in [k for k in order if k in found] + [k for k in found if k not in order]:
             self.device.connections[keyword] = found[keyword]
 
@@ -504,7 +507,8 @@ class _Reader:
             return None
         port = Port(int(match[2]))
         for child in element:
-            tag = child.tag
+            # an edsconv:Port's children are in its namespace, a Port's in none
+            tag = etree.QName(child).localname if child.tag != EDSCONV + "Value" else child.tag
             try:
                 if tag == "PortTypeName":
                     port.type_name = (child.text or "").strip()
@@ -541,8 +545,8 @@ class _Reader:
                 placed.append((int(position), port))
             else:
                 ports.append(port)
-        for position, port in sorted(placed, key=lambda item: item[0]):
-            ports.insert(position, port)
+        for index, port in sorted(placed, key=lambda item: item[0]):
+            ports.insert(index, port)
         self.device.ports.extend(ports)
 
 
@@ -553,12 +557,15 @@ def _describe(element: etree._Element) -> str:
     return f"{owner} {name}" if owner else name
 
 
-def read_commnet_profile(root: etree._Element, device: Device) -> list[Diagnostic]:
-    """Fill ``device.connections`` and ``device.ports`` from a network profile (the inverse of
-    :func:`commnet_profile`, extension elements included); the diagnostics name values
-    that could not be read. The required-minimum objects carry nothing the model keeps."""
-    reader = _Reader(device)
-    body = root.find("ProfileBody")
+def read_commnet_profile(source: XmlDocument | etree._ElementTree | etree._Element,
+                         device: Device) -> list[Diagnostic]:
+    """Fill ``device.connections`` and ``device.ports`` from a network profile (the document,
+    its root or tree; the inverse of :func:`commnet_profile`, extension elements included);
+    the diagnostics name values that could not be read, at their element. The
+    required-minimum objects carry nothing the model keeps."""
+    document = XmlDocument.of(source)
+    reader = _Reader(device, document)
+    body = document.tree.getroot().find("ProfileBody")
     if body is None:
         return reader.diagnostics
     descriptions = body.find("ApplicationLayers/ConnectionManager/ConnectionDescriptions")

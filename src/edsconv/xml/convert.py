@@ -62,7 +62,7 @@ class Output:
 def profile_documents(device: Device, header: Header, stem: str) -> list[Output]:
     """The device and communication network profiles, validated."""
     from edsconv.xml.commnet import commnet_profile
-    from edsconv.xml.device import device_profile
+    from edsconv.xml.device_write import device_profile
 
     return [Output(f"{stem}_device.xml", serialise(device_profile(device, header), "cip-device")),
             Output(f"{stem}_commnet.xml", serialise(commnet_profile(device, header), "ethernetip-commnet"))]
@@ -78,7 +78,7 @@ def wrapper_handle(device: Device, reference: str) -> etree._Element:
         key = (identity.vendor_code, identity.product_type, identity.product_code)
         values = (" ".join("" if v is None else str(v) for v in key),
                   f"{identity.major_revision}.{identity.minor_revision}", identity.icon)
-    for tag, text in zip(("ProfileIdentification", "ProfileRevision", "ProfileLocation"), values):
+    for tag, text in zip(("ProfileIdentification", "ProfileRevision", "ProfileLocation"), values, strict=True):
         if text is not None:
             etree.SubElement(handle, tag).text = text
     return handle
@@ -148,7 +148,7 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
     """Read, validate and convert XML profiles into one Device; a wrapper resolves to its EDS."""
     from edsconv import build, load
     from edsconv.xml.commnet import read_commnet_profile
-    from edsconv.xml.device import read_device_profile
+    from edsconv.xml.device_read import read_device_profile
     from edsconv.xml.validate import read_and_validate
 
     device = Device()
@@ -158,14 +158,13 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
         diagnostics.extend(report.diagnostics)
         if document is None or has_errors(report.diagnostics):
             return None, diagnostics
-        root = document.tree.getroot()
         kind = report.kind.name if report.kind else ""
         if kind == "cip-device":
-            diagnostics.extend(read_device_profile(root, device))
+            diagnostics.extend(read_device_profile(document, device))
         elif kind == "ethernetip-commnet":
-            diagnostics.extend(read_commnet_profile(root, device))
+            diagnostics.extend(read_commnet_profile(document, device))
         elif kind in ("eds-device-wrapper", "eds-commnet-wrapper"):
-            found, described = find_wrapped_eds(path, root)
+            found, described = find_wrapped_eds(path, document.tree.getroot())
             if found is None:
                 diagnostics.append(Diagnostic.of(WRAPPER_NOT_FOUND, f"the wrapper references an EDS ({described}); "
                                                  f"no such EDS is next to it in {path.parent}", 1, 1, str(path)))

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import cast
 
 from lxml import etree
 
@@ -147,7 +148,7 @@ class FileReport:
 def _header_text(root: etree._Element, *steps: str) -> str:
     query = "./" + "/".join(f"*[local-name()='{step}']" for step in steps) + "/text()"
     found = root.xpath(query)
-    return found[0].strip() if found else ""
+    return found[0].strip() if isinstance(found, list) and found and isinstance(found[0], str) else ""
 
 
 def detect_kind(root: etree._Element) -> ProfileKind | None:
@@ -190,19 +191,20 @@ def read_and_validate(path: Path, forced: ProfileKind | None = None) -> tuple[Xm
             NOT_VALIDATED, "POWERLINK XDD profile container recognised; not validated (no schema for it)",
             *document.position(root), report.path))
     else:
-        report.diagnostics.extend(_schema_diagnostics(document, report))
+        report.diagnostics.extend(_schema_diagnostics(document, report.kind, report.path))
     return document, report
 
 
 _XML_ERROR_RULES = {XmlSyntaxError: NOT_WELL_FORMED, UnsafeXmlError: UNSAFE_XML, XmlTooLargeError: TOO_LARGE}
 
 
-def _schema_diagnostics(document: XmlDocument, report: FileReport) -> Iterable[Diagnostic]:
-    kind = report.kind
-    for error in load_schema(kind.xsd).iter_errors(document.tree):
-        line, column = document.position(error.elem) if error.elem is not None else (0, 0)
+def _schema_diagnostics(document: XmlDocument, kind: ProfileKind, path: str) -> Iterable[Diagnostic]:
+    for error in load_schema(kind.xsd or "").iter_errors(document.tree):
+        # the document is an lxml tree, so are the elements xmlschema reports
+        element = cast(etree._Element, error.elem)
+        line, column = document.position(element) if element is not None else (0, 0)
         reason = (error.reason or error.message).strip().rstrip(".")
-        diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column, report.path)
+        diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column, path)
         diagnostic.clause = f"ISO 15745-4 {kind.clause}"
         yield diagnostic
 

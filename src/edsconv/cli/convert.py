@@ -13,6 +13,7 @@ from typing import Any
 
 import click
 
+from edsconv.atomic import write_all_atomically, write_atomically
 from edsconv.cli.common import (
     EXIT_FINDINGS,
     CannotRun,
@@ -25,7 +26,7 @@ from edsconv.cli.common import (
 )
 from edsconv.diagnostics import Severity
 from edsconv.model import Device
-from edsconv.xml.common import Header, InvalidProfile, write_atomically
+from edsconv.xml.common import Header, InvalidProfile
 from edsconv.xml.convert import (
     WRAPPER_REFERENCES,
     Output,
@@ -77,14 +78,11 @@ def _documents(eds_file: Path, device: Device, header: Header, wrapper_reference
 
 
 def _write_all(output_dir: Path, outputs: list[Output], force: bool) -> list[Path]:
-    """Write every document, or none when one exists and ``force`` is not given."""
+    """Write every document or none (none when one exists and ``force`` is not given)."""
     targets = [output_dir / output.name for output in outputs]
-    existing = [str(t) for t in targets if t.exists()]
-    if existing and not force:
-        raise CannotRun(f"not overwriting {', '.join(existing)} (use --force)")
-    for target, output in zip(targets, outputs, strict=True):
-        with writing(target):
-            write_atomically(target, output.data, force=True)
+    with writing(output_dir):  # an error names the file it is about
+        write_all_atomically([(target, output.data) for target, output in zip(targets, outputs, strict=True)],
+                             force=force)
     return targets
 
 

@@ -125,3 +125,13 @@ def test_a_signal_writes_neither_profile_and_leaves_nothing(tmp_path: Path, sign
     else:
         assert written == []
         assert err == f"edsconv: interrupted by {signal.Signals(signal_number).name}\n"
+
+
+def test_lint_of_a_directory_without_eds_files_cannot_run(tmp_path: Path) -> None:
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "readme.txt").write_text("not an EDS")
+    result = CliRunner().invoke(cli, ["lint", str(tmp_path)])
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert result.stderr == f"no EDS file (*.eds) found in {tmp_path}; nothing checked\n"
+    (tmp_path / "sub" / "a.eds").write_text('[File]\nDescText = "x";\n')
+    assert CliRunner().invoke(cli, ["lint", str(tmp_path)]).exit_code == 1  # found and checked

@@ -135,3 +135,11 @@ def test_lint_of_a_directory_without_eds_files_cannot_run(tmp_path: Path) -> Non
     assert result.stderr == f"no EDS file (*.eds) found in {tmp_path}; nothing checked\n"
     (tmp_path / "sub" / "a.eds").write_text('[File]\nDescText = "x";\n')
     assert CliRunner().invoke(cli, ["lint", str(tmp_path)]).exit_code == 1  # found and checked
+
+
+def test_eds2xml_help_names_the_files_it_writes_and_the_exit_codes() -> None:
+    text = " ".join(CliRunner().invoke(cli, ["eds2xml", "--help"]).stdout.split())
+    for words in ("STEM_device.xml and STEM_commnet.xml", "STEM_device_wrapper.xml and STEM_commnet_wrapper.xml",
+                  "0 converted, no errors", "1 converted but the checks found errors, or not converted (XML103)",
+                  "2 could not run"):
+        assert words in text

@@ -29,7 +29,9 @@ from edsconv.model import Device
 from edsconv.xml.common import Header, InvalidProfile
 from edsconv.xml.convert import (
     WRAPPER_REFERENCES,
+    NotConverted,
     Output,
+    conversion_refusals,
     device_from_profiles,
     header_for,
     profile_documents,
@@ -53,15 +55,41 @@ from edsconv.xml.convert import (
               help="ProfileDate YYYY-MM-DD (default: [File] ModDate, else CreateDate).")
 def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: str, force: bool,
                     **overrides: Any) -> int:
-    """Convert an EDS into ISO 15745-4 XML profiles (device + communication network)."""
+    """Convert an EDS into ISO 15745-4 XML profiles (device + communication network).
+
+    \b
+    Writes, in the output directory (STEM: EDS_FILE's name without its extension):
+      STEM_device.xml and STEM_commnet.xml
+      with --wrapper: STEM_device_wrapper.xml and STEM_commnet_wrapper.xml
+    Both files or neither: nothing is written when one cannot be.
+
+    An EDS whose text or values cannot all be read (syntax or value errors), or
+    whose [Device] lacks VendCode, ProdType, ProdCode, MajRev or MinRev, is not
+    converted (XML103): the profiles would lose or invent data.
+
+    \b
+    Exit status:
+      0  converted, no errors
+      1  converted but the checks found errors, or not converted (XML103)
+      2  could not run: unreadable input, a file that cannot be written,
+         existing files without --force, a bad option
+    """
     from edsconv import analyse
 
-    device, diagnostics = analyse(read_eds(eds_file))
+    eds = read_eds(eds_file)
+    device, diagnostics = analyse(eds)
     echo_diagnostics((d for d in diagnostics if d.severity is Severity.ERROR), err=True)
     if isinstance(overrides["date"], datetime.datetime):
         overrides["date"] = overrides["date"].date()
     header = header_for(device, eds_file.stem, overrides)
-    outputs = _documents(eds_file, device, header, WRAPPER_REFERENCES[reference] if wrapper else None)
+    try:
+        refusals = conversion_refusals(eds, device)
+        if refusals:
+            raise NotConverted(refusals)
+        outputs = _documents(eds_file, device, header, WRAPPER_REFERENCES[reference] if wrapper else None)
+    except NotConverted as refused:
+        echo_diagnostics(refused.diagnostics, err=True)
+        return EXIT_FINDINGS
     for target in _write_all(output_dir, outputs, force):
         click.echo(str(target))
     return exit_status(diagnostics)

@@ -231,7 +231,7 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
     from edsconv import build, load
     from edsconv.xml.commnet import read_commnet_profile
     from edsconv.xml.device import read_device_profile
-    from edsconv.xml.validate import read_and_validate
+    from edsconv.xml.validate import kind_title, read_and_validate
 
     device = Device()
     diagnostics: list[Diagnostic] = []
@@ -256,7 +256,8 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
             diagnostics.extend(eds.diagnostics)
             return build(eds), diagnostics
         else:
-            diagnostics.append(Diagnostic.of(NOT_A_PROFILE, f"a {kind or 'unknown'} profile is not an EtherNet/IP "
-                                             "device, network or EDS wrapper profile", 1, 1, str(path)))
+            what = kind_title(report.kind) if report.kind else "a profile of unknown kind"
+            diagnostics.append(Diagnostic.of(NOT_A_PROFILE, f"not an EtherNet/IP device, network or EDS wrapper "
+                                             f"profile: {what}", 1, 1, str(path)))
             return None, diagnostics
     return device, diagnostics

@@ -143,3 +143,13 @@ def test_eds2xml_help_names_the_files_it_writes_and_the_exit_codes() -> None:
                   "0 converted, no errors", "1 converted but the checks found errors, or not converted (XML103)",
                   "2 could not run"):
         assert words in text
+
+
+def test_lint_of_one_long_line_of_letters_says_what_was_expected(tmp_path: Path) -> None:
+    path = tmp_path / "letters.eds"
+    path.write_text("A" * 5_000_000)
+    result = CliRunner().invoke(cli, ["lint", str(path)])
+    assert result.exit_code == 1
+    assert result.stdout == (f"{path}:1:1: EDS001 unexpected 'AAAAAAAAAAAAAAAAAAAAAAAAAAA...': expected a section "
+                             "header '[Name]', an entry 'Keyword =' or the end of the file [C.4.1.2.2]\n")
+    assert "something else" not in result.stdout

@@ -44,7 +44,7 @@ def main(argv: list[str]) -> None:
     print(f"{name}: {len(seeds)} seeds, {per_byte * 1e6:.2f} us per byte", file=sys.stderr)
     timed = targets.Timed(target, per_byte)
     atheris.Setup([argv[0], str(work / "corpus"), f"-seed_inputs=@{seed_list}", f"-artifact_prefix={work}/",
-                   "-print_final_stats=1", *options], timed)
+                   "-print_final_stats=1", "-report_slow_units=86400", *options], timed)
     atheris.Fuzz()
 
 

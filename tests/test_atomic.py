@@ -140,3 +140,28 @@ def test_a_directory_or_a_file_in_the_way_is_an_error_before_anything_is_written
     (tmp_path / "file").write_text("")
     with pytest.raises(NotADirectoryError, match="is not a directory"):
         write_atomically(tmp_path / "file" / "sub" / "x.eds", b"x")
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
+def test_a_device_is_written_to_not_replaced(tmp_path: Path) -> None:
+    device = Path("/dev/full")
+    kind = stat.S_IFMT(device.stat().st_mode)
+    with pytest.raises(OSError, match="No space left on device") as raised:
+        write_atomically(device, b"x")  # no --force needed: a device is not a file to overwrite
+    assert raised.value.filename == "/dev/full"
+    assert stat.S_ISCHR(kind) and stat.S_IFMT(device.stat().st_mode) == kind
+    assert not list(Path("/dev").glob(".full.*.tmp"))
+
+
+def test_a_named_pipe_is_written_to_not_replaced(tmp_path: Path) -> None:
+    import threading
+
+    pipe = tmp_path / "pipe"
+    os.mkfifo(pipe)
+    received: list[bytes] = []
+    reader = threading.Thread(target=lambda: received.append(pipe.read_bytes()))
+    reader.start()
+    write_atomically(pipe, b"profile")
+    reader.join(10)
+    assert received == [b"profile"]
+    assert stat.S_ISFIFO(pipe.stat().st_mode) and list(tmp_path.iterdir()) == [pipe]

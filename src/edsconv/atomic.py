@@ -11,7 +11,8 @@ Every file edsconv writes (``eds2xml``'s two profiles, ``xml2eds -o``, ``fmt``,
 - any failure or signal before the renames removes the temporary files;
 - a new file gets the mode the umask gives (``0o666 & ~umask``), a replaced file
   keeps its mode (and, where the user may set them, its owner and group);
-- a symbolic link is written through: its target is replaced, the link stays.
+- a symbolic link is written through: its target is replaced, the link stays;
+- a device or a named pipe (``-o /dev/stdout``) is written to, never replaced.
 
 What a SIGKILL (or a power loss) can still leave is said in docs/mapping.md
 ("Output files"): stray temporary files, and, between the renames of a pair,
@@ -45,24 +46,32 @@ def write_all_atomically(files: Sequence[tuple[Path, bytes]], *, force: bool = F
     false, and the OSError of the first step that fails, naming its file.
     """
     targets = [_written_path(path) for path, _ in files]
-    existing = [str(path) for path, _ in files if path.exists()]
+    existing = [str(path) for path, _ in files if path.is_file()]
     if existing and not force:
         one = len(existing) == 1
         raise FileExistsError(f"{', '.join(existing)} exist{'s' if one else ''} "
                               f"(use --force to overwrite {'it' if one else 'them'})")
+    # a device or a pipe (-o /dev/stdout) is written to, never replaced by a file
+    special = [(path, target, data) for target, (path, data) in zip(targets, files, strict=True)
+               if target.exists() and not target.is_file()]
+    regular = [(path, target, data) for target, (path, data) in zip(targets, files, strict=True)
+               if not (target.exists() and not target.is_file())]
     temporaries: list[Path] = []
     try:
-        for target, (path, data) in zip(targets, files, strict=True):
+        for path, target, data in regular:
             with _naming(path):
                 _complete_temporary(target, data, temporaries)
         with signals_held():
-            for temporary, target, (path, _) in zip(temporaries, targets, files, strict=True):
+            for temporary, (path, target, _) in zip(temporaries, regular, strict=True):
                 with _naming(path):
                     os.replace(temporary, target)
     except BaseException:
         for temporary in temporaries:
             temporary.unlink(missing_ok=True)
         raise
+    for path, target, data in special:
+        with _naming(path), open(target, "wb") as stream:
+            stream.write(data)
 
 
 @contextmanager
@@ -77,7 +86,10 @@ def _naming(path: Path) -> Iterator[None]:
 
 
 def _written_path(path: Path) -> Path:
-    """The file that is replaced: the target of a symbolic link, else ``path``; never a directory."""
+    """The file that is replaced: the target of a symbolic link, else ``path``; never a directory.
+    A device or a pipe is ``path`` itself (``/dev/stdout`` links to a name that cannot be opened)."""
+    if path.exists() and not path.is_file() and not path.is_dir():
+        return path
     target = Path(os.path.realpath(path)) if path.is_symlink() else path
     if target.is_dir():
         raise IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR), str(path))

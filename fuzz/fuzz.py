@@ -38,6 +38,8 @@ def main(argv: list[str]) -> None:
     work = targets.REPO / "build" / "fuzz" / name
     (work / "corpus").mkdir(parents=True, exist_ok=True)
     seeds = targets.seed_files(target, real)
+    if ".xml" in target.suffixes:
+        seeds += targets.generated_profiles(work / "generated")
     seed_list = work / "seeds.txt"
     seed_list.write_text(",".join(str(p) for p in seeds))
     per_byte = targets.seconds_per_byte(target, [p.read_bytes() for p in seeds])

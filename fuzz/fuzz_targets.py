@@ -107,6 +107,27 @@ def seed_files(target: Target, real: bool = True) -> list[Path]:
     return sorted(p for root in roots for p in root.rglob("*") if p.is_file() and p.suffix.lower() in target.suffixes)
 
 
+def generated_profiles(directory: Path, limit: int = 80) -> list[Path]:
+    """Profiles eds2xml makes of the EDS files of corpus/ (ours only), written to ``directory``:
+    seeds for the XML targets that reach the readers of xml2eds, which need valid profiles."""
+    directory.mkdir(parents=True, exist_ok=True)
+    made: list[Path] = []
+    for source in sorted((REPO / "corpus").rglob("*.eds"))[:limit]:
+        eds = edsconv.parse(source.read_bytes(), str(source))
+        device, _ = edsconv.analyse(eds)
+        if conversion_refusals(eds, device):
+            continue
+        stem = "-".join(source.relative_to(REPO / "corpus").with_suffix("").parts)
+        try:
+            outputs = profile_documents(device, Header.derive(device, stem), stem)
+        except NotConverted:
+            continue
+        for output in outputs:
+            (directory / output.name).write_bytes(output.data)
+            made.append(directory / output.name)
+    return made
+
+
 def seconds_per_byte(target: Target, seeds: list[bytes]) -> float:
     """The seeds' average time per byte under ``target`` (each counted at least :data:`FLOOR_BYTES`),
     after one warm-up run that loads the grammar and the schemas."""

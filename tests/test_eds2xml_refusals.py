@@ -33,6 +33,7 @@ def garbage() -> dict[str, bytes]:
         "vendcode_of_500_digits": re.sub(r"VendCode = \d+;", "VendCode = " + "9" * 500 + ";", TEXT).encode(),
         "leading_zeros": TEXT.replace("ProdCode = 1001;", "ProdCode = 01001;").encode(),
         "no_majrev": TEXT.replace("MajRev = 1;", "").encode(),
+        "control_character_in_a_section_name": (TEXT + "\n[Vendor\x1bSection]\n    65535_Thing = 1;\n").encode(),
         "syntax_error": TEXT.replace('ProdName = "Example IO Adapter 8DI/8DO";', 'ProdName = "x" "y" ]]];').encode(),
     }
 

@@ -21,7 +21,7 @@ from lxml import etree
 from edsconv.diagnostics import Diagnostic, Severity, block, has_errors, rule
 from edsconv.eds.syntax import EdsFile
 from edsconv.model import Device
-from edsconv.xml.common import Header, header_element, serialise
+from edsconv.xml.common import Header, header_element, is_xml_text, serialise
 from edsconv.xml.safe import XmlError, parse_xml
 
 WRAPPER_NOT_FOUND = rule(
@@ -59,6 +59,8 @@ NOT_CONVERTED = rule(
           in place of the value (a 500-digit VendCode would become `0`);
         - [Device] does not give VendCode, ProdType, ProdCode, MajRev and MinRev: the
           profile's identity (ProfileIdentification, DeviceIdentity) would be invented;
+        - a section name holds characters XML 1.0 cannot carry (control characters):
+          the profiles name sections in attributes;
         - the profile would not be readable by an XML parser with the usual limits
           (edsconv's own reader included): a value or comment longer than 10 MB,
           or a document larger than 64 MiB.
@@ -116,6 +118,11 @@ def conversion_refusals(eds: EdsFile, device: Device) -> list[Diagnostic]:
         refusals.append(Diagnostic.of(
             NOT_CONVERTED, f"not converted: the profiles would lose what {len(unread)} error(s) could not read "
             f"(the first: {first.code} at line {first.line})", first.line, first.column, eds.path))
+    for section in eds.sections:
+        if not is_xml_text(section.name):
+            refusals.append(Diagnostic.of(
+                NOT_CONVERTED, f"not converted: the section name {section.name!r} holds characters XML 1.0 cannot "
+                "carry (control characters)", section.line, section.column, eds.path))
     missing = [keyword for keyword, attribute in IDENTITY if not isinstance(getattr(device.identity, attribute), int)]
     if missing:
         section = next((s for s in eds.sections if s.name == "Device"), None)

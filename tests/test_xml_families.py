@@ -101,3 +101,12 @@ def test_validate_prints_the_summary_line_on_success_and_on_errors() -> None:
     bad = CliRunner().invoke(cli, ["validate", str(XML / "broken" / "not-well-formed.xml")])
     assert bad.exit_code == 1 and bad.stderr == "1 file: 1 errors, 0 warnings, 0 notes\n"
     assert CliRunner().invoke(cli, ["validate", "--format", "json", str(CIP_FILES["cip-device"])]).stderr == ""
+
+
+def test_a_value_the_validator_cannot_check_is_xml007_not_a_traceback() -> None:
+    # found by fuzzing xml2eds: xmlschema raised OverflowError for a ProfileDate of a 40-digit year
+    path = REPO / "tests" / "fuzz_regressions" / "xml2eds" / "profile_date_of_a_40_digit_year.xml"
+    assert [d.code for d in validate_file(path).diagnostics] == ["XML007"]
+    assert [d.code for d in validate_file(CIP_FILES["cip-device"]).diagnostics] == []
+    device, diagnostics = device_from_profiles([path])
+    assert device is None and [d.code for d in diagnostics] == ["XML007"]

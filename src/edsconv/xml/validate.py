@@ -114,6 +114,19 @@ TOO_LARGE = rule(
     good="any profile under 64 MiB.",
 )
 
+NOT_CHECKABLE = rule(
+    "XML007", Severity.ERROR, "ISO 15745-4", "A value lies beyond what the schema validator can check",
+    explanation="""
+        The schema validator (xmlschema) failed on a value it cannot represent, such as a
+        date whose year has 40 digits (xs:date sets no bound, the validator does). The
+        rest of the file is not validated, so the file is not taken as valid: xml2eds
+        does not convert it. Real profiles never come near these limits.
+    """,
+    bad="`<ProfileDate>20242024202420242024202420242024-06-03</ProfileDate>`",
+    good="`<ProfileDate>2024-06-03</ProfileDate>`",
+)
+
+
 @dataclass(frozen=True, slots=True)
 class Family:
     """An ISO 15745 family edsconv recognises but does not validate (no schema)."""
@@ -272,12 +285,18 @@ _XML_ERROR_RULES = {XmlSyntaxError: NOT_WELL_FORMED, UnsafeXmlError: UNSAFE_XML,
 
 def _schema_diagnostics(document: XmlDocument, report: FileReport) -> Iterable[Diagnostic]:
     kind = report.kind
-    for error in load_schema(kind.xsd).iter_errors(document.tree):
-        line, column = document.position(error.elem) if error.elem is not None else (0, 0)
-        reason = (error.reason or error.message).strip().rstrip(".")
-        diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column, report.path)
-        diagnostic.clause = f"ISO 15745-4 {kind.clause}"
-        yield diagnostic
+    try:
+        for error in load_schema(kind.xsd).iter_errors(document.tree):
+            line, column = document.position(error.elem) if error.elem is not None else (0, 0)
+            reason = (error.reason or error.message).strip().rstrip(".")
+            diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column,
+                                       report.path)
+            diagnostic.clause = f"ISO 15745-4 {kind.clause}"
+            yield diagnostic
+    except (ArithmeticError, ValueError) as failure:  # xmlschema raises, e.g. for a date of year 10**40
+        yield Diagnostic.of(NOT_CHECKABLE, f"a value lies beyond what the validator can check ({failure}); the "
+                            "rest of the file is not validated", *document.position(document.tree.getroot()),
+                            report.path)
 
 
 #: The names ``--schema`` accepts: a profile kind or the file name of its schema.

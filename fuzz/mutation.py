@@ -2,7 +2,7 @@
 does not build. Not coverage-guided: it mutates the seeds at random (bytes, ranges, tokens of both
 languages, splices, long repetitions) for a fixed time and checks every input as fuzz/fuzz.py does.
 
-    python fuzz/mutation.py TARGET SECONDS [--seed N] [--real]
+    python fuzz/mutation.py TARGET SECONDS [--seed N] [--real] [--generated]
 
 A failing input is written to build/fuzz/TARGET/ and its path is in the error.
 """
@@ -60,12 +60,16 @@ def mutate(data: bytes, rng: random.Random, donors: list[bytes]) -> bytes:
     return bytes(out[:MAX_SIZE])
 
 
-def run(name: str, seconds: float, seed: int = 0, real: bool = False, sample: int = 40) -> Outcome:
+def run(name: str, seconds: float, seed: int = 0, real: bool = False, sample: int = 40,
+        generated: bool = False) -> Outcome:
     """Mutate ``sample`` of the target's seeds for ``seconds``; raise AssertionError naming the saved
-    input on the first one that breaks the invariant."""
+    input on the first one that breaks the invariant. ``generated``: the XML targets also mutate the
+    profiles eds2xml makes of corpus/ (:func:`fuzz_targets.generated_profiles`)."""
     target = targets.TARGETS[name]
     rng = random.Random(seed)
     paths = targets.seed_files(target, real)
+    if generated and ".xml" in target.suffixes:
+        paths += targets.generated_profiles(targets.REPO / "build" / "fuzz" / name / "generated")
     seeds = [p.read_bytes() for p in sorted(rng.sample(paths, min(sample, len(paths))))]
     timed = targets.Timed(target, targets.seconds_per_byte(target, seeds))
     start, executions = time.monotonic(), 0
@@ -91,9 +95,10 @@ def save(name: str, data: bytes) -> Path:
 
 def main(argv: list[str]) -> None:
     if len(argv) < 3 or argv[1] not in targets.TARGETS:
-        sys.exit(f"usage: python fuzz/mutation.py {{{','.join(targets.TARGETS)}}} SECONDS [--seed N] [--real]")
+        sys.exit(f"usage: python fuzz/mutation.py {{{','.join(targets.TARGETS)}}} SECONDS [--seed N] [--real] "
+                 "[--generated]")
     seed = int(argv[argv.index("--seed") + 1]) if "--seed" in argv else 0
-    outcome = run(argv[1], float(argv[2]), seed, real="--real" in argv)
+    outcome = run(argv[1], float(argv[2]), seed, real="--real" in argv, generated="--generated" in argv)
     print(f"{outcome.target}: {outcome.executions} executions in {outcome.seconds:.0f} s, no failure")
 
 

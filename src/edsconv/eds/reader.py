@@ -402,8 +402,10 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
 
     def on_error(error: UnexpectedInput) -> bool:
         """Insert a missing ';' and go on; otherwise keep what is complete and give up."""
+        accepted = error.interactive_parser.accepts() if isinstance(error, UnexpectedToken) else set()
         if not (isinstance(error, UnexpectedToken) and error.token.type in ("ENTRY_START", "SECTION", "$END")
-                and "SEMICOLON" in error.interactive_parser.accepts()):
+                and "SEMICOLON" in accepted):
+            error.accepted = accepted  # type: ignore[attr-defined]  # for the message: the reduction spends the parser
             _reduce_complete_statements(error)
             return False
         stack = error.interactive_parser.parser_state.value_stack
@@ -480,8 +482,10 @@ def _error_message(error: UnexpectedInput, text: str, position: int) -> tuple[Ru
     if error.token.type == "RUN" and "SEMICOLON" in error.expected:
         return MISSING_COMMA, f"a ',' is missing before {_describe(error.token)}"
     # accepts() asks the parser state itself; ``expected`` is blurred by LALR's merged states.
-    expected = _expected(error.interactive_parser.accepts())
-    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {expected}"
+    accepted = getattr(error, "accepted", None)
+    if accepted is None:
+        accepted = error.interactive_parser.accepts()
+    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(accepted)}"
 
 
 def _starts_statement(error: UnexpectedInput) -> bool:

@@ -72,6 +72,8 @@ def without_comments(document: XmlDocument) -> XmlDocument:
     """A copy of ``document`` without comments and processing instructions inside its root; the text
     around each is joined, so that a simple-content element has its one text again. Elements keep
     the line libxml2 recorded for them (diagnostics point into the original)."""
+    if next(document.tree.getroot().iter(etree.Comment, etree.ProcessingInstruction), None) is None:
+        return document  # nothing to remove: no copy of a large document
     tree = copy.deepcopy(document.tree)
     etree.strip_elements(tree.getroot(), etree.Comment, etree.ProcessingInstruction, with_tail=False)
     return replace(document, tree=tree)

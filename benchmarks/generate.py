@@ -1,19 +1,27 @@
-"""Write the generated benchmark inputs: Params-heavy EDS files in the EZ-EDS style.
+"""Write the generated benchmark inputs, in two file shapes.
 
     python benchmarks/generate.py [--out DIR]
 
-writes params-2mb.eds and params-50mb.eds to DIR (default: <tempdir>/edsconv-bench).
-The output is deterministic; it is never committed.
+EZ-EDS shape (``params-*.eds``): [Params] entries of 12 lines, a comment on every
+line, as EZ-EDS writes them. Dense shape (``dense-*.eds``): one short entry per
+line and no comment, as generators and hand editors write them: ``dense-params``
+holds only ``ParamN = 0,,,0x0000,0xC8,4,"P1","","",0,100,1,,,,,,,,,;`` lines (the
+file of issue 13), ``dense-mixed`` parameters, assemblies that use them and
+connections that use both, so that the semantic model, the checks and ``show``
+have cross-references to resolve. Every file goes to DIR (default:
+<tempdir>/edsconv-bench); the output is deterministic and never committed.
 """
 
 from __future__ import annotations
 
 import argparse
+import itertools
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
 
 DEFAULT_DIR = Path(tempfile.gettempdir()) / "edsconv-bench"
-SIZES = {"params-2mb.eds": 2 * 1024 * 1024, "params-50mb.eds": 50 * 1024 * 1024}
+MIB = 1024 * 1024
 
 HEADER = """\
 $ EZ-EDS Version 3.23.1.20171205 Generated Electronic Data Sheet
@@ -40,7 +48,6 @@ $ EZ-EDS Version 3.23.1.20171205 Generated Electronic Data Sheet
 [Device Classification]
         Class1 = EtherNetIP;
 
-[Params]
 """
 
 # (data type, size in bytes, minimum, maximum) cycled over the parameters.
@@ -67,16 +74,65 @@ def param(n: int) -> str:
 """
 
 
+def dense_param(n: int) -> str:
+    return f'        Param{n} = 0,,,0x0000,0xC8,4,"P1","","",0,100,1,,,,,,,,,;\n'
+
+
+def dense_assembly(n: int, params: int) -> str:
+    """Four of the ``params`` parameters, of 4 bytes each, by reference."""
+    members = ",".join(f"32,Param{(4 * n + k) % params + 1}" for k in range(4))
+    return f'        Assem{n} = "Assembly {n}","20 04 24 {n % 256:02X} 30 03",16,0x0000,,,{members};\n'
+
+
+def dense_connection(n: int, assemblies: int) -> str:
+    """An exclusive owner: parameter RPIs, three of the ``assemblies`` for both directions and configuration."""
+    output, data_in, config = ((3 * n + k) % assemblies + 1 for k in range(3))
+    return (f"        Connection{n} = 0x04010002,0x44640405,Param1,16,Assem{output},Param1,16,Assem{data_in},,,"
+            f'16,Assem{config},"Connection {n}","","20 04 24 {n % 256:02X} 2C 96 2C 64";\n')
+
+
+def dense_mixed(scale: int = 1) -> Iterator[str]:
+    """[Params] with 20,000 entries, [Assembly] with 10,000, [Connection Manager] with 6,000, divided by ``scale``."""
+    yield "[Params]\n"
+    yield from (dense_param(n) for n in range(1, 20000 // scale + 1))
+    yield "\n[Assembly]\n"
+    yield from (dense_assembly(n, 20000 // scale) for n in range(1, 10000 // scale + 1))
+    yield "\n[Connection Manager]\n"
+    yield from (dense_connection(n, 10000 // scale) for n in range(1, 6000 // scale + 1))
+
+
+def repeated(entry, first: str = "[Params]\n") -> Iterator[str]:
+    """``first``, then ``entry(1)``, ``entry(2)`` ... for ever: the caller stops at its size."""
+    yield first
+    yield from map(entry, itertools.count(1))
+
+
+#: name -> (the text after the header, in pieces; how much of it: bytes for the EZ-EDS shape, entries for the
+#: dense parameters, None for all)
+SHAPES: dict[str, tuple] = {
+    "params-2mb.eds": (lambda: repeated(param), 2 * MIB),
+    "params-0.5mb.eds": (lambda: repeated(param), MIB // 2),
+    "params-50mb.eds": (lambda: repeated(param), 50 * MIB),
+    "dense-params-40k.eds": (lambda: repeated(dense_param), 40000),
+    "dense-params-10k.eds": (lambda: repeated(dense_param), 10000),
+    "dense-mixed-1.7mb.eds": (lambda: dense_mixed(2), None),
+    "dense-mixed-0.4mb.eds": (lambda: dense_mixed(8), None),
+}
+
+
 def generate(name: str, directory: Path = DEFAULT_DIR) -> Path:
-    """Write the input ``name`` (a key of SIZES) to ``directory``: EZ-EDS Params until the size is reached."""
+    """Write the input ``name`` (a key of SHAPES) to ``directory``."""
     path = directory / name
     directory.mkdir(parents=True, exist_ok=True)
-    with path.open("w", encoding="ascii", newline="\n") as out:
+    body, size = SHAPES[name]
+    temporary = path.with_suffix(".tmp")
+    with temporary.open("w", encoding="ascii", newline="\n") as out:
         written = out.write(HEADER)
-        n = 0
-        while written < SIZES[name]:
-            n += 1
-            written += out.write(param(n))
+        for count, text in enumerate(body()):
+            if size is not None and (count > size if name.startswith("dense") else written >= size):
+                break
+            written += out.write(text)
+    temporary.replace(path)
     return path
 
 
@@ -84,7 +140,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=DEFAULT_DIR, help="output directory")
     directory = parser.parse_args().out
-    for name in SIZES:
+    for name in SHAPES:
         path = generate(name, directory)
         print(f"{path}: {path.stat().st_size} bytes")
 

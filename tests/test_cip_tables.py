@@ -80,7 +80,8 @@ def test_common_entries_are_shared_not_copied():
     class_sections = [s for s in cip.all_sections() if s.class_id is not None or s is cip.VENDOR_CLASS_SECTION]
     assert len(class_sections) >= 30
     for section in class_sections:
-        defined_2003 = {e.keyword for e in spec.SECTIONS[section.name].entries} if section.name in spec.SECTIONS else set()
+        defined_2003 = ({e.keyword for e in spec.SECTIONS[section.name].entries}
+                        if section.name in spec.SECTIONS else set())
         for keyword, entry in common.items():
             if keyword in defined_2003:
                 assert section.entry(sample[keyword]) is None
@@ -208,7 +209,7 @@ def test_field_types_match_eds_pie():
 
 
 def test_repetition_and_presence_match_eds_pie_or_the_disagreement_is_recorded():
-    for section_name, key, entry, ours in _modelled_eds_pie_entries():
+    for _section_name, key, entry, ours in _modelled_eds_pie_entries():
         assert (ours.presence is spec.Presence.REQUIRED) == entry["required"], key
         marker = entry["enumerated_fields"]
         repeats_from = min((f.number for f in ours.fields if f.repeats), default=None)
@@ -338,7 +339,7 @@ def _real_counts() -> tuple[dict[int, set[str]], dict[int, set[str]]]:
         for section in eds.sections:
             if section.name not in spec.SECTIONS and cip.section_spec(section.name) is not None:
                 sections[id(cip.section_spec(section.name))].add(path.name)
-        for section, entry, found in newer_entries(eds):
+        for section, _entry, found in newer_entries(eds):
             if found is not None:
                 entries[id(found)].add(path.name)
                 if section in cip.SECTION_EXTENSIONS:

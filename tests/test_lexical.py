@@ -6,7 +6,8 @@ import pytest
 
 import edsconv
 from conftest import codes, parse_ok, values
-from edsconv.eds.syntax import Group, Scalar, String, ValueKind, stringi_members
+from edsconv.eds.syntax import Group, Scalar, String, ValueKind
+from edsconv.model.values import to_stringi
 
 # --- C.4.1.2.2.5 / .6 sections -------------------------------------------------------------
 
@@ -258,11 +259,11 @@ Field1 = { 3,
 
 def test_stringi_members():
     (group,) = values(STRINGI)
-    members = stringi_members(group)
+    members = to_stringi(group)
     assert [(m.language, m.type_code, m.charset, m.text) for m in members] == [
-        ("eng", "0xD0", "4", "This is an ASCII English language string"),
-        ("spa", "0xD5", "1000", "Espa\u00f1oles palabras"),
-        ("deu", "0xD0", "4", "Spanische W\u00f6rter"),
+        ("eng", 0xD0, 4, "This is an ASCII English language string"),
+        ("spa", 0xD5, 1000, "Espa\u00f1oles palabras"),
+        ("deu", 0xD0, 4, "Spanische W\u00f6rter"),
     ]
 
 
@@ -271,4 +272,4 @@ def test_stringi_members():
 def test_malformed_stringi_is_rejected(body):
     (group,) = values(f"[S]\nK = {body};\n")
     with pytest.raises(ValueError):
-        stringi_members(group)
+        to_stringi(group)

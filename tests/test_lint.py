@@ -278,7 +278,8 @@ def test_rules_lists_every_rule_sorted():
 def test_parse_does_not_import_what_only_other_commands_need(tmp_path: Path):
     probe = ("import sys\nfrom edsconv.cli import cli\n"
              "cli.main(['parse', sys.argv[1]], standalone_mode=False)\n"
-             "print(sorted(m for m in ('xmlschema', 'rich', 'concurrent.futures', 'edsconv.lint') if m in sys.modules))")
+             "print(sorted(m for m in ('xmlschema', 'rich', 'concurrent.futures', 'edsconv.lint') "
+             "if m in sys.modules))")
     (tmp_path / "good.eds").write_bytes(GOOD)
     result = subprocess.run([sys.executable, "-c", probe, str(tmp_path / "good.eds")], capture_output=True,
                             text=True, timeout=60)

@@ -51,7 +51,7 @@ def test_errors_are_exactly_the_expected_ones(name):
     errors = [(d.code, d.line) for d in load(name).diagnostics if d.severity.name == "ERROR"]
     expected = BROKEN.get(name, [])
     assert len(errors) == len(expected), errors
-    for (code, line), (want_code, want_line) in zip(errors, expected):
+    for (code, line), (want_code, want_line) in zip(errors, expected, strict=True):
         assert line == want_line and code in (want_code if isinstance(want_code, tuple) else (want_code,)), errors
 
 

@@ -75,7 +75,9 @@ def test_a_check_whose_rules_are_all_deselected_does_not_run(monkeypatch):
     assert [d.code for d in found] == ["EDS313"]
 
     ran.clear()
-    _, found = edsconv.analyse(eds, Selection.of(ignore=["EDS2", "EDS3"]))
+    # every check reports EDS2xx or EDS3xx codes, but two: the string characters of every section (EDS116,
+    # EDS117) and ModuleMemberList in place of a pair (EDS406, the merge's rule)
+    _, found = edsconv.analyse(eds, Selection.of(ignore=["EDS116", "EDS117", "EDS2", "EDS3", "EDS406"]))
     assert ran == [] and [d.code for d in found if d.code >= "EDS2"] == []
 
     ran.clear()

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 import xmlschema
 
+from edsconv import cache as cache_module
 from edsconv.xml import schemas
 from edsconv.xml.safe import read_xml
 
@@ -130,10 +131,10 @@ def test_a_cache_file_of_another_user_is_not_unpickled(cache, monkeypatch):
     # Seen as another user, the directory is refused outright...
     assert schemas._read_cache(cache_file(), xmlschema.XMLSchema11) is None
     # ...and so is the file on its own.
-    monkeypatch.setattr(schemas, "_trusted_dir", lambda directory: True)
+    monkeypatch.setattr(cache_module, "trusted_dir", lambda directory: True)
     assert schemas._read_cache(cache_file(), xmlschema.XMLSchema11) is None
     loaded = []
-    monkeypatch.setattr(schemas.pickle, "load", lambda stream: loaded.append(stream))
+    monkeypatch.setattr(schemas.pickle, "loads", lambda data: loaded.append(data))
     schemas._read_cache(cache_file(), xmlschema.XMLSchema11)
     assert loaded == []  # refused before unpickling, not after
 

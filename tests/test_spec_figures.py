@@ -16,8 +16,9 @@ import pytest
 
 import edsconv
 from edsconv.diagnostics import Severity
-from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, String, StringIMember, stringi_members
+from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, String
 from edsconv.eds.writer import write
+from edsconv.model.values import StringIMember, to_stringi
 
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "corpus" / "spec"
@@ -497,11 +498,11 @@ def test_section_header_before_unreadable_text_is_kept():
 
 def test_stringi_example_members():
     (field,) = entry(spec("stringi_C4135.eds"), "Example", "Field1").fields
-    assert stringi_members(field.value) == [
-        StringIMember("eng", "0xD0", "4", "This is an ASCII English language string"),
-        StringIMember("spa", "0xD5", "1000", "Españoles palabras"),
-        StringIMember("deu", "0xD0", "4", "Spanische Wörter auf Deutsch"),
-    ]
+    assert to_stringi(field.value) == (
+        StringIMember("eng", 0xD0, 4, "This is an ASCII English language string"),
+        StringIMember("spa", 0xD5, 1000, "Españoles palabras"),
+        StringIMember("deu", 0xD0, 4, "Spanische Wörter auf Deutsch"),
+    )
     contents = [member.value.fields[3].value for member in field.value.fields[1:]]
     assert [value.unicode for value in contents] == [False, True, False]
     assert [c.text for c in field.value.fields[2].value.fields[3].comments] == [' "Spanish words"']
@@ -513,10 +514,10 @@ def test_stringi_example_members():
     '[A]\nX = {1, {eng,0xD0,4,"a"}};\n',
     '[A]\nX = {{"eng",0xD0,4,"a"}};\n',
 ])
-def test_stringi_members_rejects_a_malformed_group(text):
+def test_to_stringi_rejects_a_malformed_group(text):
     (field,) = edsconv.parse(text).sections[0].entries[0].fields
     with pytest.raises(ValueError):
-        stringi_members(field.value)
+        to_stringi(field.value)
 
 
 STRINGS = [

@@ -98,32 +98,34 @@ def test_io_adapter_reads_back_typed_values(io_adapter):
     assert connection.help == ""
     assert connection.path[:2] == (PathItem(byte=0x20), PathItem(byte=0x04))
     assert device.ports == [Port(1, "TCP", "EtherNet/IP Port", tuple(PathItem(byte=b) for b in (0x20, 0xF5, 0x24, 1)),
-                                 1)]
+                                 2)]
 
 
-def test_io_adapter_port_and_required_minimum(io_adapter):
+def test_io_adapter_port_and_header(io_adapter):
     (port,) = io_adapter.xpath("//TransportLayers/Ports/Port")
     assert port.get("id") == "Port1"
     assert [(child.tag, child.text) for child in port] == [
         ("PortTypeName", "TCP"), ("PortName", "EtherNet/IP Port"), ("PortObject", "20 F5 24 01"),
-        ("PortNumber", "1"), ("PortSpecific", None)]
+        ("PortNumber", "2"), ("PortSpecific", None)]
     header = io_adapter.find("ProfileHeader")
     assert header.findtext("ProfileIdentification") == "65535-12-1001-COMM"
     assert header.findtext("IASInterfaceType") == "CSI"
     body = io_adapter.find("ProfileBody")
     assert body.get("Revision") == "1.1" and body.get("CreateDate") == "2026-11-22"
-    # an EtherNet/IP device: the objects the EDS says nothing about get the marked minimum
-    marked = {m.getparent().tag for m in io_adapter.iterfind(".//e:RequiredMinimum", EDSCONV_PREFIX)}
-    assert marked == {
-        "ConnectionManager_InstanceOperations", "EtherNetIPLinkObject_InstanceAttributes",
-        "EtherNetIPLinkObject_InstanceOperations", "TCPIPInterfaceObject_InstanceAttributes",
-        "TCPIPInterfaceObject_InstanceOperations", "EncapsulationProtocol_Attributes",
-        "EncapsulationProtocol_Operations", "EtherNetIPLinkObject_ClassAttributes",
-        "EtherNetIPLinkObject_ClassOperations", "TCPIPInterfaceObject_ClassAttributes",
-        "TCPIPInterfaceObject_ClassOperations"}
-    assert io_adapter.find(".//Forward_Open").get("SupportedService") == "true"
-    assert io_adapter.find(".//EtherNetIPLinkObject_InstanceAttributes/MediaCounters").get("Access_Rule") == "None"
-    assert io_adapter.find(".//MessageRouter") is not None and len(io_adapter.find(".//MessageRouter")) == 0
+
+
+def test_io_adapter_states_no_service_or_attribute_the_eds_does_not(io_adapter):
+    """An EtherNet/IP device's EDS says nothing about the services of its Connection Manager or the
+    attributes of its EtherNet/IP objects: the profile has no SupportedService, no Access_Rule and
+    none of the objects, only what the schema requires (ConnectionManager, MessageRouter,
+    TransportLayers) around the connections and ports."""
+    assert io_adapter.xpath("//@SupportedService | //@Access_Rule") == []
+    body = io_adapter.find("ProfileBody")
+    assert [child.tag for child in body] == ["ApplicationLayers", "TransportLayers"]
+    assert [child.tag for child in body.find("ApplicationLayers")] == ["ConnectionManager", "MessageRouter"]
+    assert [child.tag for child in body.find("ApplicationLayers/ConnectionManager")] == ["ConnectionDescriptions"]
+    assert len(body.find("ApplicationLayers/MessageRouter")) == 0
+    assert [child.tag for child in body.find("TransportLayers")] == ["Ports"]
 
 
 # --- what the schema's types cannot hold -----------------------------------------------------
@@ -232,11 +234,10 @@ def test_hand_built_values_beyond_the_eds_reader():
     assert root.find(".//Ports") is None and root.find(".//e:Port", EDSCONV_PREFIX) is not None
 
 
-def test_a_device_without_ethernetip_gets_no_filled_objects():
+def test_a_device_without_connections_gets_no_descriptions():
     device = Device(ports=[Port(2, "DeviceNet", "A", None, 2)])
     root = assert_round_trip(device)
     assert root.find(".//NetworkManagement") is None and root.find(".//EtherNetIPLinkObject") is None
-    assert root.find(".//e:RequiredMinimum", EDSCONV_PREFIX) is None
     assert root.find(".//ConnectionDescriptions") is None
 
 
@@ -266,3 +267,19 @@ def test_unreadable_values_are_diagnosed():
     assert [d.code for d in diagnostics] == ["EDS109", "EDS101"]
     assert "Connection1 Path" in diagnostics[0].message and "'XYZ'" in diagnostics[0].message
     assert again.connections["Connection1"].path is None
+
+
+def test_a_repeated_connection_id_is_diagnosed_and_the_first_kept():
+    """Connection ids are xsd:IDs, unique among the schema's elements; an edsconv:Connection (an
+    extension element, written for keywords beyond the id pattern) is not checked by the schema."""
+    device = edsconv.build(edsconv.parse(EDGE))
+    root = etree.fromstring(profile(device))
+    descriptions = root.find(".//ConnectionDescriptions")
+    first = descriptions.find("Connection")
+    again = etree.SubElement(descriptions, EDSCONV + "Connection", id=first.get("id"))
+    etree.SubElement(again, EDSCONV + "Name_String").text = "second"
+    read = Device()
+    diagnostics = read_commnet_profile(root, read)
+    assert [d.code for d in diagnostics] == ["EDS009"]
+    assert f"id {first.get('id')!r} repeats" in diagnostics[0].message
+    assert read.connections[first.get("id")] == device.connections[first.get("id")]

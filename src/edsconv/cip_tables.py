@@ -42,7 +42,7 @@ from edsconv.spec_tables import (
     find_entry,
 )
 
-O, R = Presence.OPTIONAL, Presence.REQUIRED
+O, R = Presence.OPTIONAL, Presence.REQUIRED  # noqa: E741 - the column letters of spec_tables
 #: eds-pie 1.2.0 reference files.
 META, ENIP, COMMON = "meta_eds_lib.json", "ethernetip_lib.json", "common_object_class.json"
 #: ``clause`` of a record known from practice only.
@@ -142,7 +142,8 @@ COMMON_OBJECT_ENTRIES: tuple[EntrySpec, ...] = (
             _src(f"{_C}.Object_Name", 44, "the class's name + ' Object' ('TCP/IP Interface Object')")),
     _single(_COMMON, "Object_Class_Code", "Object Class Code", "UDINT",
             "CIP class ID of the object; agrees with the section's class ID",
-            _src(f"{_C}.Object_Class_Code", 44, "hex (0xF5) in every file but one (the hand-written eds-pie demo), which writes 6 and 245")),
+            _src(f"{_C}.Object_Class_Code", 44,
+                 "hex (0xF5) in every file but one (the hand-written eds-pie demo), which writes 6 and 245")),
     _entry(_COMMON, "Service_Description", "Description of a service", _src(f"{_C}.Service_DescriptionN"),
            _fields(_src(f"{_C}.Service_DescriptionN"),
                    ("Service Code", "USINT"), ("Name", "EDS_Char_Array"),

@@ -18,7 +18,6 @@ from typing import Any
 from edsconv import spec_tables as tables
 from edsconv.model import (
     Assembly,
-    AssemblyMember,
     Connection,
     ConnectionEndpoint,
     Device,
@@ -101,7 +100,7 @@ def describe_parameter(parameter: Parameter) -> dict:
     if any(links.values()):
         doc["scaling_links"] = links
     if parameter.size_adder:
-        doc["size_adder"] = dict(zip(("minimum", "maximum", "default"), plain(parameter.size_adder)))
+        doc["size_adder"] = dict(zip(("minimum", "maximum", "default"), plain(parameter.size_adder), strict=False))
     return doc
 
 
@@ -114,7 +113,7 @@ def _parameter_summary(parameter: Parameter) -> dict:
 
 def _assembly_summary(assembly: Assembly, device: Device) -> dict:
     return {"kind": "assembly", "keyword": assembly.keyword, "name": assembly.name,
-            "size": plain(assembly.size), "total_bits": _layout(assembly, device)[1]}
+            "size": plain(assembly.size), "total_bits": _total_bits(assembly, device)}
 
 
 def resolve(reference: Reference, device: Device) -> dict:
@@ -136,36 +135,26 @@ def resolve(reference: Reference, device: Device) -> dict:
 # --- assemblies ---------------------------------------------------------------------------------
 
 
-def _member_bits(member: AssemblyMember, device: Device, seen: frozenset[str]) -> int | None:
-    if member.size is not None:
-        return member.size
-    reference = member.reference
-    if not isinstance(reference, Reference):
+def _total_bits(assembly: Assembly, device: Device) -> int | None:
+    """What the members add up to; None when a size is unknown, the members come from the
+    module, or none is listed."""
+    if assembly.module_member_list or not assembly.members:
         return None
-    target = reference.target if reference.target is not None else device.resolve(reference.keyword)
-    if isinstance(target, Parameter):
-        if isinstance(target.data_size, int):
-            return 8 * target.data_size
-        return 8 * target.data_type.size if target.data_type and target.data_type.size else None
-    if isinstance(target, Assembly) and target.keyword not in seen:
-        if isinstance(target.size, int):
-            return 8 * target.size
-        return _layout(target, device, seen)[1]
-    return None
+    bits = [device.member_bits(assembly, member) for member in assembly.members]
+    return None if None in bits else sum(b for b in bits if b is not None)
 
 
-def _layout(assembly: Assembly, device: Device, seen: frozenset[str] = frozenset()) -> tuple[list[dict], int | None]:
-    """The members of an assembly with their bit offsets, and the total bits (None when a size is unknown)."""
-    seen = seen | {assembly.keyword}
+def _layout(assembly: Assembly, device: Device) -> list[dict]:
+    """The members of an assembly with their bit offsets (None after a member of unknown size)."""
     members: list[dict] = []
     offset: int | None = 0
     for member in assembly.members:
-        bits = _member_bits(member, device, seen)
+        bits = device.member_bits(assembly, member)
         reference = member.reference
         if reference is None:
             what: dict[str, Any] = {"kind": "pad"}
         elif isinstance(reference, Reference):
-            what = resolve(reference, device) if len(seen) < 16 else {"kind": "reference", "keyword": str(reference)}
+            what = resolve(reference, device)
         elif isinstance(reference, int):
             what = {"kind": "constant", "value": reference}
         elif isinstance(reference, str):
@@ -174,13 +163,11 @@ def _layout(assembly: Assembly, device: Device, seen: frozenset[str] = frozenset
             what = {"kind": "path", "path": decode_path(reference, device)}
         members.append({"offset": offset, "bits": bits, "declared_bits": member.size, "member": what})
         offset = offset + bits if offset is not None and bits is not None else None
-    if assembly.module_member_list or not assembly.members:
-        return members, None  # the members come from the module, or are not listed
-    return members, offset
+    return members
 
 
 def describe_assembly(assembly: Assembly, device: Device) -> dict:
-    members, total = _layout(assembly, device)
+    members, total = _layout(assembly, device), _total_bits(assembly, device)
     return {
         "keyword": assembly.keyword,
         "name": assembly.name,
@@ -222,7 +209,7 @@ def describe_connection_parameters(connection: Connection) -> dict | None:
     table = tables.CONNECTION_PARAMETER_BITS
     doc: dict[str, Any] = {"value": f"0x{value:08X}"}
     for direction in ("O=>T", "T=>O"):
-        def get(name: str) -> int:
+        def get(name: str, direction: str = direction) -> int:
             return table.field(f"{direction} {name}").extract(value)
 
         doc[direction] = {

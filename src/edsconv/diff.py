@@ -20,8 +20,11 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from edsconv import spec_tables as tables
 from edsconv.eds.syntax import Group, Scalar, String
 from edsconv.model import (
+    PARAMETER_FIELD_ATTRIBUTES,
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     AssemblyMember,
     Connection,
@@ -29,7 +32,9 @@ from edsconv.model import (
     GenericEntry,
     GenericSection,
     Parameter,
+    ParameterGroup,
     Reference,
+    parameter_field_type,
 )
 from edsconv.model.values import PathItem, StringIMember
 
@@ -161,23 +166,34 @@ class _Differ:
                 self.changes.append(Change("added", key, None, label(record), category))
 
 
-_FILE = {"description": "", "create_date": "", "create_time": "", "mod_date": "", "mod_time": "", "revision": "",
-         "home_url": ""}
-_IDENTITY = {"vendor_code": "UINT", "vendor_name": "", "product_type": "UINT", "product_type_string": "",
-             "product_code": "UINT", "major_revision": "USINT", "minor_revision": "USINT", "product_name": "",
-             "catalog": "", "icon": "", "exclude_from_adapter_rack_connection": ""}
-_PARAM_CLASS = {"max_instances": "UINT", "descriptor": "WORD", "cfg_assembly": "UINT"}
-_PARAMETER = {"link_path_size": "USINT", "link_path": "EPATH", "descriptor": "WORD", "data_type_code": "code",
-              "data_size": "USINT", "name": "", "units": "", "help": "", "minimum": "", "maximum": "",
-              "default": "", "international_name": "", "international_units": "", "international_help": ""}
-_SCALING = {"multiplier": "UINT", "divisor": "UINT", "base": "UINT", "offset": "INT", "multiplier_link": "UINT",
-            "divisor_link": "UINT", "base_link": "UINT", "offset_link": "UINT", "decimal_precision": "USINT"}
+def _single_entry_types(section: str) -> dict[str, str]:
+    """attribute -> the type its [File] / [Device] / [ParamClass] / [Modular] entry is written in."""
+    specs = {spec.keyword: spec for spec in tables.SECTIONS[section].entries}
+    return {attribute: specs[keyword].fields[0].alternatives[0]
+            for keyword, attribute in SINGLE_ENTRY_ATTRIBUTES[section].items()}
+
+
+_FILE = _single_entry_types("File")
+_IDENTITY = _single_entry_types("Device")
+_PARAM_CLASS = _single_entry_types("ParamClass")
+
+
+def _parameter_field_types() -> tuple[dict[str, str], dict[str, str]]:
+    """attribute -> type of the Parameter fields and of its Scaling (Table C.13), in field order."""
+    parameter: dict[str, str] = {}
+    scaling: dict[str, str] = {}
+    for attribute in PARAMETER_FIELD_ATTRIBUTES[1:]:
+        record, _, name = attribute.rpartition(".")
+        (scaling if record else parameter)[name] = parameter_field_type(attribute)
+    return parameter, scaling
+
+
+_PARAMETER, _SCALING = _parameter_field_types()
 _ASSEMBLY = {"name": "", "path": "EPATH", "size": "UINT", "descriptor": "WORD", "module_member_list": ""}
 _CONNECTION = {"trigger_transport": "DWORD", "parameters": "DWORD"}
 _ENDPOINTS = (("o_to_t", "O=>T"), ("t_to_o", "T=>O"), ("config1", "config #1"), ("config2", "config #2"))
 _PORT = {"type_name": "Keyword", "name": "", "object_path": "EPATH", "port_number": "UINT", "specific": ""}
-_MODULAR = {"define_slots_in_rack": "UINT", "slot_display_rule": "", "width": "UINT", "external_id": "EPATH",
-            "generic_id": "EPATH", "extern_id_exact_match": "Keyword"}
+_MODULAR = _single_entry_types("Modular")
 _RACK = {"vendor_code": "UINT", "product_type": "UINT", "product_code": "UINT", "major_revision": "USINT",
          "minor_revision": "USINT", "legal_slots": ""}
 _QUERY = {"path": "EPATH", "service": "USINT", "id_size": "USINT", "empty_slot_id": "EPATH"}
@@ -205,10 +221,7 @@ def diff(a: Device, b: Device) -> list[Change]:
     d.keyed(a.parameters, b.parameters, "params", lambda key, old, new: _parameter(d, key, old, new),
             lambda p: display(p.name))
     d.keyed({f"Group{g.number}": g for g in a.groups}, {f"Group{g.number}": g for g in b.groups}, "params",
-            lambda key, old, new: (d.value(f"{key} name", old.name, new.name, "params"),
-                                   d.value(f"{key} members", [m.keyword for m in old.members],
-                                           [m.keyword for m in new.members], "params")),
-            lambda g: display(g.name))
+            lambda key, old, new: _group(d, key, old, new), lambda g: display(g.name))
     d.value("Assembly Revision", a.assembly_revision, b.assembly_revision, "assemblies", "UINT")
     d.keyed(a.assemblies, b.assemblies, "assemblies", lambda key, old, new: _assembly(d, key, old, new),
             lambda x: display(x.name))
@@ -237,6 +250,11 @@ def _parameter(d: _Differ, key: str, old: Parameter, new: Parameter) -> None:
             d.value(f"{key} enum {value}", old_enum.get(value), new_enum.get(value), "params")
 
 
+def _group(d: _Differ, key: str, old: ParameterGroup, new: ParameterGroup) -> None:
+    d.value(f"{key} name", old.name, new.name, "params")
+    d.value(f"{key} members", [m.keyword for m in old.members], [m.keyword for m in new.members], "params")
+
+
 def _enum_text(enum: dict | None) -> str | None:
     if enum is None:
         return None
@@ -249,11 +267,11 @@ def _assembly(d: _Differ, key: str, old: Assembly, new: Assembly) -> None:
         before = old.members[index] if index < len(old.members) else None
         after = new.members[index] if index < len(new.members) else None
         what = f"{key} member {index + 1}"
-        if before is None:
+        if before is None and after is not None:
             d.changes.append(Change("added", what, None, _member_text(after), "assemblies"))
-        elif after is None:
+        elif after is None and before is not None:
             d.changes.append(Change("removed", what, _member_text(before), None, "assemblies"))
-        elif not same(before, after):
+        elif before is not None and after is not None and not same(before, after):
             d.changes.append(Change("changed", what, _member_text(before), _member_text(after), "assemblies"))
 
 

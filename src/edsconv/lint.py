@@ -17,7 +17,6 @@ from __future__ import annotations
 import difflib
 import enum
 import os
-import stat
 import sys
 import traceback
 from collections.abc import Iterable, Sequence
@@ -126,12 +125,10 @@ def _fixed(path: str, data: bytes, rules: FileRules, fix: FixMode) -> FileReport
         report.diff = "".join(difflib.unified_diff(old.splitlines(keepends=True), new.splitlines(keepends=True),
                                                    path, f"{path} (fixed)"))
         return report
-    from edsconv.xml.common import write_atomically
+    from edsconv.atomic import write_atomically
 
-    target = Path(path).resolve()  # a symbolic link stays a link: its target is fixed
-    mode = target.stat().st_mode
-    write_atomically(target, outcome.data, force=True)
-    os.chmod(target, stat.S_IMODE(mode))
+    # a symbolic link stays a link (its target is fixed), and the file keeps its mode: edsconv.atomic
+    write_atomically(Path(path), outcome.data, force=True)
     return report
 
 
@@ -206,7 +203,7 @@ def _lint_parallel(tasks: list[tuple[str, FileRules]], jobs: int, fix: FixMode) 
         # A worker died (killed, out of memory): every file not answered for is reported, the rest kept.
         message = f"the worker process checking this file died ({error}); please report it"
         reports = [r or _failed(f, message, rules.selection) for (f, rules), r in zip(tasks, reports, strict=True)]
-    return [r for r in reports if r is not None]  # every slot is filled by now
+    return [r for r in reports if r is not None]  # every file has its report by now
 
 
 def _size(path: str) -> int:

@@ -17,7 +17,7 @@ import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePath
-from typing import Protocol
+from typing import Any, Protocol
 from urllib.parse import quote
 
 from edsconv.diagnostics import Diagnostic, Rule, Severity, all_rules
@@ -133,7 +133,7 @@ def sarif_document(reports: Sequence[Report], root: Path | None = None) -> dict:
         for d, fingerprint in zip(report.diagnostics, fingerprints, strict=True):
             # a finding about the whole file (no line) is placed on line 1, as code scanning needs a start line
             physical: dict = {"artifactLocation": location, "region": _region(d) if d.line > 0 else {"startLine": 1}}
-            result: dict = {
+            result: dict[str, Any] = {
                 "ruleId": d.code,
                 "level": _SARIF_LEVEL[d.severity],
                 "message": {"text": f"{d.message} [{d.clause}]" if d.clause else d.message},

@@ -41,7 +41,8 @@ class Presence(enum.Enum):
         return self.value
 
 
-R, O, C, X = Presence.REQUIRED, Presence.OPTIONAL, Presence.CONDITIONAL, Presence.RESERVED
+# the spec tables' own column letters
+R, O, C, X = Presence.REQUIRED, Presence.OPTIONAL, Presence.CONDITIONAL, Presence.RESERVED  # noqa: E741 - see above
 
 # ---------------------------------------------------------------------------
 # Data types: CIP elementary types (C.4.1.3.3 - C.4.1.3.10) and EDS-only types
@@ -229,8 +230,7 @@ EDS_URL_SCHEMES = ("http", "ftp", "file")
 #: C.4.1.3.5: the string type codes a STRINGI language member may name.
 STRINGI_STRING_TYPES = frozenset({0xD0, 0xD5, 0xD9, 0xDA})
 
-#: Table C.4: string escape sequences -> translation. ``\x`` takes two hex
-#: digits, ``\u`` four (and only in L"..." strings).
+#: Table C.4: the named string escape sequences -> the character each stands for.
 ESCAPE_SEQUENCES: Mapping[str, str] = MappingProxyType({
     "\\\\": "\\",
     "\\n": "\n",
@@ -242,9 +242,10 @@ ESCAPE_SEQUENCES: Mapping[str, str] = MappingProxyType({
     "\\a": "\a",
     '\\"': '"',
     "\\'": "'",
-    "\\x": "byte nn (two hex digits)",
-    "\\u": "16-bit nnnn (four hex digits), L-strings only",
 })
+#: Table C.4: the numeric escapes -> their count of hex digits: ``\xnn`` a byte,
+#: ``\unnnn`` a 16-bit character (only in L"..." strings).
+NUMERIC_ESCAPES: Mapping[str, int] = MappingProxyType({"\\x": 2, "\\u": 4})
 
 
 @dataclass(frozen=True, slots=True)
@@ -261,7 +262,8 @@ _LENGTH = MinMaxRule(R, "length", "minimum / maximum string length; Data Size gi
 # restored: the seed's Table C.17 merges the BYTE..LWORD rows into one "Not
 # allowed" cell, and prints EPATH as "EPAUTH" ("Enumerated Path").
 MIN_MAX_RULES: Mapping[str, MinMaxRule] = MappingProxyType({
-    **{n: MinMaxRule(Presence.NOT_ALLOWED, None, "bit strings have no min/max") for n in ("BYTE", "WORD", "DWORD", "LWORD")},
+    **{n: MinMaxRule(Presence.NOT_ALLOWED, None, "bit strings have no min/max")
+       for n in ("BYTE", "WORD", "DWORD", "LWORD")},
     **{n: _LENGTH for n in ("STRING", "STRING2", "STRINGN", "SHORT_STRING")},
     "EPATH": MinMaxRule(O, "length", "minimum / maximum path length"),
 })
@@ -277,7 +279,9 @@ def min_max_rule(type_name: str) -> MinMaxRule:
 # Field value kinds beyond data types, and field keywords
 # ---------------------------------------------------------------------------
 
-_N = "[1-9][0-9]{0,4}"
+#: An entry's instance number as the C.3 XSD patterns write it (1 .. 99999).
+INSTANCE_NUMBER = "[1-9][0-9]{0,4}"
+_N = INSTANCE_NUMBER
 #: Non-data-type values a field may hold: kind -> regular expression of the
 #: value (None when it is not a lexical form), following the C.3 XSD patterns.
 FIELD_VALUE_KINDS: Mapping[str, str | None] = MappingProxyType({
@@ -299,8 +303,25 @@ FIELD_VALUE_KINDS: Mapping[str, str | None] = MappingProxyType({
     "Empty": None,
 })
 
+#: Every keyword an EDS field may name another entry by: ParamN, ProxyParamN, AssemN,
+#: ProxyAssemN (C.4.1.4.8, C.4.1.4.9, C.4.1.5.3), AssemExaN (the extended assembly of CIP
+#: editions after 2003, which real files name where an AssemN may stand) and a bit of a
+#: parameter (``Param10:0``, newer files). Groups: family, number, bit.
+REFERENCE_RE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
+#: C.4.1.4.9.13: a parameter substituted into a path, ``[ParamN]`` or ``ProxyParamN``.
+PATH_REFERENCE_RE = re.compile(r"(?:Proxy)?Param[1-9][0-9]*")
+#: The lexical spaces of references in CIPDataTypes.xsd (C.3): et_ParamReference,
+#: et_AssemReference, and the parameter items of et_EPATH_item.
+XSD_PARAM_REFERENCE_RE = re.compile(f"(?:Proxy)?Param{INSTANCE_NUMBER}(?::[0-9]{{1,2}})*")
+XSD_ASSEM_REFERENCE_RE = re.compile(f"(?:Proxy)?Assem{INSTANCE_NUMBER}")
+XSD_PATH_REFERENCE_RE = re.compile(rf"\[?(?:Proxy)?Param{INSTANCE_NUMBER}\]?")
+#: A vendor-specific keyword as the C.2/C.3 XSD patterns write it (main classification, port type).
+XSD_VENDOR_KEYWORD = f"{INSTANCE_NUMBER}_[A-Za-z0-9][A-Za-z0-9_]*"
+
 #: C.4.1.2.2.11: vendor-specific keywords (entries, sections, field keywords).
 VENDOR_KEYWORD_RE = re.compile(r"[1-9][0-9]*_[A-Za-z0-9_]+")
+#: A vendor-specific section keyword: C.4.1.2.2.3 allows single inner spaces in section keywords.
+VENDOR_SECTION_KEYWORD_RE = re.compile(r"[1-9][0-9]*_[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
 #: C.4.1.2.2.3: characters of keywords; a space only inside section keywords.
 KEYWORD_RE = re.compile(r"[A-Za-z0-9_]+")
 SECTION_KEYWORD_RE = re.compile(r"[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
@@ -458,7 +479,8 @@ _TRANSPORTS = ("listen-only", "input-only", "exclusive-owner", "redundant-owner"
 TRIGGER_TRANSPORT_BITS = BitTable("Trigger and transport mask", "C.23", _C23, 32, (
     *(_flag(i, f"class {i}", _C23, "not supported", f"class {i}: {d}", "class") for i, d in enumerate(_CLASSES)),
     _reserved(7, 15, _C23, "class"),
-    *(_flag(16 + i, f"trigger {d}", _C23, "not supported", f"trigger: {d}", "trigger") for i, d in enumerate(_TRIGGERS)),
+    *(_flag(16 + i, f"trigger {d}", _C23, "not supported", f"trigger: {d}", "trigger")
+      for i, d in enumerate(_TRIGGERS)),
     _reserved(19, 23, _C23, "trigger"),
     *(_flag(24 + i, d, _C23, "not set", f"transport type: {d}", "transport") for i, d in enumerate(_TRANSPORTS)),
     _reserved(28, 30, _C23),
@@ -725,15 +747,20 @@ def _single(section, keyword, name, eds_type, presence, clause, table, descripti
 def _singles(section: str, clause: str, table: str, rows) -> tuple[EntrySpec, ...]:
     """Single-field entries of a section; each row is ((keyword, name,
     eds_type, presence), description[, keywords for _single])."""
-    return tuple(_single(section, *row[0], clause, table, row[1], **(row[2] if len(row) > 2 else {}))
-                 for row in rows)
+    entries = []
+    for row in rows:
+        keyword, name, eds_type, presence = row[0]
+        entries.append(_single(section, keyword, name, eds_type, presence, clause, table, row[1],
+                               **(row[2] if len(row) > 2 else {})))
+    return tuple(entries)
 
 
 # --- [File] (Tables C.6, C.7) ----------------------------------------------
 
 _FILE = "C.4.1.4.2"
 FILE_ENTRIES = _singles("File", _FILE, "C.6", (
-    (("DescText", "File Description Text", "EDS_Char_Array", R), "A single line of text displayed by the configuration tool"),
+    (("DescText", "File Description Text", "EDS_Char_Array", R),
+     "A single line of text displayed by the configuration tool"),
     (("CreateDate", "File Creation Date", "EDS_Date", R), "Creation date of the EDS; not for version control"),
     (("CreateTime", "File Creation Time", "EDS_Time_Of_Day", R), "Creation time of the EDS; not for version control"),
     (("ModDate", "Last Modification Date", "EDS_Date", C),
@@ -856,6 +883,9 @@ PARAMS_ENTRIES = (
     EntrySpec("ProxiedEnum", True, "Params", ENUM_FIELDS, O, _MOD, "",
               "Enumeration of ProxiedParamN", pairs_with="ProxiedParam"),
 )
+#: The EnumN family of each parameter family: Param -> Enum, ProxyParam -> ProxyEnum ...
+ENUM_FAMILIES: Mapping[str, str] = MappingProxyType({
+    e.pairs_with: e.keyword for e in PARAMS_ENTRIES if e.pairs_with and e.fields is ENUM_FIELDS})
 
 # --- [Groups] (Table C.19) ---------------------------------------------------
 
@@ -1063,13 +1093,18 @@ def section_spec(name: str) -> SectionSpec | None:
     name = name.strip().removeprefix("[").removesuffix("]").strip()
     if name in SECTIONS:
         return SECTIONS[name]
-    return VENDOR_SECTION if VENDOR_KEYWORD_RE.fullmatch(name) else None
+    return VENDOR_SECTION if VENDOR_SECTION_KEYWORD_RE.fullmatch(name) else None
 
 
 def split_numbered(keyword: str) -> tuple[str, int | None]:
     """``"Param12"`` -> ``("Param", 12)``; un-numbered keywords -> ``(keyword, None)``."""
     m = _NUMBERED.fullmatch(keyword)
     return (m.group(1), int(m.group(2))) if m else (keyword, None)
+
+
+def instance_number(keyword: str) -> int:
+    """The N of a numbered keyword (``"Param12"`` -> 12); 0 for a keyword without one."""
+    return split_numbered(keyword)[1] or 0
 
 
 def entry_spec(section: str, keyword: str) -> EntrySpec | None:
@@ -1086,6 +1121,14 @@ def entry_spec(section: str, keyword: str) -> EntrySpec | None:
         return None
     spec = _ENTRY_INDEX.get((sec.name, prefix))
     return spec if spec is not None and spec.numbered else None
+
+
+def known_entry(section: str, keyword: str) -> EntrySpec:
+    """The spec of an entry the code names itself; KeyError when the tables lack it."""
+    spec = entry_spec(section, keyword)
+    if spec is None:
+        raise KeyError(f"[{section}] {keyword}")
+    return spec
 
 
 def find_entry(entries: tuple[EntrySpec, ...], keyword: str) -> EntrySpec | None:

@@ -9,7 +9,9 @@ reported again here.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
+from typing import TypeGuard
 
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
@@ -23,14 +25,16 @@ from edsconv.checks.entity_rules import (
     DUPLICATE_CONNECTION_NAME,
     DUPLICATE_PORT_NUMBER,
     EMPTY_MEMBER,
+    ENUM_NOT_PAIRS,
     ENUM_WITHOUT_DESCRIPTOR_BIT,
     GROUP_MEMBER_COUNT,
     LEGAL_SLOT_OUT_OF_RANGE,
+    MEMBER_FIELDS_ODD,
     MODULE_IN_MEMBER,
     NESTED_ASSEMBLY,
     NO_CLASS_OR_TRIGGER,
-    PACKED_EPATH_MEMBER,
     PARAM_RESERVED_BITS,
+    PARAMCLASS_RESERVED_BITS,
     PARAMETERS_RESERVED_BITS,
     PROXY_CONNECT_NAME_MODULE,
     QUERY_FIELD_VALUE,
@@ -54,17 +58,22 @@ from edsconv.checks.entity_rules import (
 )
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import Entry
+from edsconv.merge import BAD_MODULE_MEMBER_LIST, module_member_list_faults
 from edsconv.model import (
     MODULE,
+    MODULE_MEMBER_LIST,
     Assembly,
     AssemblyMember,
     Connection,
     ConnectionEndpoint,
     Device,
     Parameter,
+    Rack,
     Reference,
 )
 from edsconv.model.build import iter_references
+from edsconv.model.device import field_written as _written
+from edsconv.model.device import is_integer as _is_int
 from edsconv.model.values import PathItem
 
 
@@ -75,16 +84,7 @@ def _node(entry: Entry | None, index: int):
     return entry
 
 
-def _written(entry: Entry | None, index: int) -> bool:
-    """True when field ``index`` holds a value (converted or not)."""
-    return entry is not None and index < len(entry.fields) and entry.fields[index].value is not None
-
-
-def _is_int(value) -> bool:
-    return isinstance(value, int) and not isinstance(value, bool)
-
-
-def _is_number(value) -> bool:
+def _is_number(value: object) -> TypeGuard[int | float]:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
 
@@ -96,18 +96,37 @@ def _path_references(connection: Connection) -> Iterator[PathItem]:
         yield from (item for item in connection.path if item.reference)
 
 
+def _reference_clause(ref: Reference) -> str:
+    """The clause that says what the field of a reference may name: an assembly member (C.4.1.4.8), a
+    connection field (C.4.1.4.9.4 - .10), the chassis SlotDisplayRule (C.4.1.5.2.2)."""
+    family = tables.split_numbered(ref.entry.keyword)[0] if ref.entry is not None else ""
+    if family in _CONNECTION_FAMILIES and ref.field_index < len(tables.CONNECTION_FIELDS):
+        return tables.CONNECTION_FIELDS[ref.field_index].clause
+    if family == "SlotDisplayRule":
+        return next(spec.clause for spec in tables.MODULAR_ENTRIES if spec.keyword == family)
+    return tables.ASSEM_FIELDS[0].clause
+
+
+_CONNECTION_FAMILIES = frozenset(spec.keyword for spec in tables.SECTIONS["Connection Manager"].entries)
+#: C.4.1.4.9.13: the connection path may name Param / ProxyParam entries.
+_PATH_CLAUSE = tables.CONNECTION_FIELDS[14].clause
+
+
 @check(UNDEFINED_REFERENCE)
 def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
+    """Every reference names a defined entry, but a group member: a GroupN lists Parameter object
+    instances, and C.4.1.4.6 lets an instance go without a ParamN entry."""
+    group_members = {id(member) for group in ctx.device.groups for member in group.members}
     for ref in iter_references(ctx.device):
-        if ref.target is None:
+        if ref.target is None and id(ref) not in group_members:
             where = ref.entry.keyword if ref.entry is not None else "a reference"
             yield ctx.at(UNDEFINED_REFERENCE, f"{where} names {ref.keyword}, which is not defined",
-                         _node(ref.entry, ref.field_index))
+                         _node(ref.entry, ref.field_index), clause=_reference_clause(ref))
     for connection in ctx.device.connections.values():
         for item in _path_references(connection):
-            if ctx.device.resolve(item.reference) is None:
+            if ctx.device.resolve(item.reference or "") is None:
                 yield ctx.at(UNDEFINED_REFERENCE, f"{connection.keyword}: the path names [{item.reference}], "
-                             "which is not defined", _node(connection.entry, 14))
+                             "which is not defined", _node(connection.entry, 14), clause=_PATH_CLAUSE)
 
 
 #: C.4.1.4.9.4 - .10 and .13: the type a parameter named in a connection field evaluates to.
@@ -133,14 +152,35 @@ def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
                 if data_type is not None and data_type.name not in allowed:
                     yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: {name} names {value.keyword}, a "
                                  f"{data_type.name}; it shall evaluate to {' or '.join(allowed)}",
-                                 _node(connection.entry, index))
+                                 _node(connection.entry, index), clause=tables.CONNECTION_FIELDS[index].clause)
         for item in _path_references(connection):
-            target = ctx.device.resolve(item.reference)
+            target = ctx.device.resolve(item.reference or "")
             if isinstance(target, Parameter) and target.data_type is not None \
                     and target.data_type.name not in _PATH_TYPES:
                 yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: the path names {item.reference}, a "
                              f"{target.data_type.name}; path parameters shall be USINT, UINT or UDINT",
-                             _node(connection.entry, 14))
+                             _node(connection.entry, 14), clause=_PATH_CLAUSE)
+
+
+def _written_count(entry: Entry) -> int:
+    """The number of fields up to the last one that holds a value."""
+    return next((index + 1 for index in range(len(entry.fields) - 1, -1, -1) if entry.fields[index].value is not None),
+                0)
+
+
+@check(ENUM_NOT_PAIRS)
+def enum_pairs(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.6: "Each Enum entry shall consist of pairs of integers and strings"."""
+    for section in ctx.eds.sections:
+        if section.name != "Params":
+            continue
+        for entry in section.entries:
+            spec = tables.entry_spec("Params", entry.keyword)
+            count = _written_count(entry)
+            if spec is not None and spec.fields == tables.ENUM_FIELDS and count % 2:
+                last = entry.fields[count - 1]
+                yield ctx.at(ENUM_NOT_PAIRS, f"{entry.keyword} has {count} fields; its last value {last.raw} has no "
+                             "string", last)
 
 
 @check(UNPAIRED_ENTRY)
@@ -292,9 +332,14 @@ def proxy_connect_names(ctx: Context) -> Iterator[Diagnostic]:
 # --- parameters ------------------------------------------------------------------------
 
 
-@check(PARAM_RESERVED_BITS, ASSEMBLY_RESERVED_BITS)
+@check(PARAM_RESERVED_BITS, ASSEMBLY_RESERVED_BITS, PARAMCLASS_RESERVED_BITS)
 def descriptors(ctx: Context) -> Iterator[Diagnostic]:
-    """Tables C.15 and C.21: reserved descriptor bits shall be 0."""
+    """Tables C.12, C.15 and C.21: reserved descriptor bits shall be 0."""
+    param_class = ctx.device.param_class
+    if param_class is not None:
+        yield from _reserved_bits(ctx, PARAMCLASS_RESERVED_BITS, "[ParamClass] Descriptor", "parameter class "
+                                  "descriptor", param_class.descriptor, tables.PARAMCLASS_DESCRIPTOR_BITS,
+                                  _section_entry(ctx.device, "ParamClass", "Descriptor"))
     for parameter in ctx.device.parameters.values():
         yield from _reserved_bits(ctx, PARAM_RESERVED_BITS, parameter.keyword, "descriptor", parameter.descriptor,
                                   tables.PARAM_DESCRIPTOR_BITS, _node(parameter.entry, 3))
@@ -303,14 +348,20 @@ def descriptors(ctx: Context) -> Iterator[Diagnostic]:
                                   tables.ASSEM_DESCRIPTOR_BITS, _node(assembly.entry, 3))
 
 
-def _bounds(parameter: Parameter) -> tuple[object, object] | None:
-    """Effective (minimum, maximum) of a numeric parameter: an absent bound is the
-    type's own (Table C.17 note b); None when a bound is unusable."""
-    data_type = parameter.data_type
+def _type_bounds(data_type: tables.DataType) -> tuple[float | None, float | None]:
+    """The bounds of a data type's values: REAL and LREAL hold -INFINITY and INFINITY too (C.4.1.3.10)."""
+    if data_type.kind == "real":
+        return -math.inf, math.inf
+    return data_type.minimum, data_type.maximum
+
+
+def _bounds(parameter: Parameter, data_type: tables.DataType) -> tuple[float, float] | None:
+    """Effective (minimum, maximum) of a numeric parameter of ``data_type``: an absent bound
+    is the type's own (Table C.17 note b); None when a bound is unusable."""
+    type_minimum, type_maximum = _type_bounds(data_type)
     entry = parameter.entry
-    bounds = []
-    for value, index, type_bound in ((parameter.minimum, 9, data_type.minimum), (parameter.maximum, 10,
-                                                                                  data_type.maximum)):
+    bounds: list[float] = []
+    for value, index, type_bound in ((parameter.minimum, 9, type_minimum), (parameter.maximum, 10, type_maximum)):
         if _is_number(value):
             bounds.append(value)
         elif not _written(entry, index) and type_bound is not None:
@@ -335,14 +386,15 @@ def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if rule_.meaning != "value":
             continue
-        bounds = _bounds(parameter)
+        bounds = _bounds(parameter, data_type)
         if bounds is None:
             continue
         low, high = bounds
         if low > high:
             yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: minimum {low} is greater than maximum {high}",
                          _node(parameter.entry, 9))
-        elif _is_number(parameter.default) and not low <= parameter.default <= high:
+        elif _is_number(parameter.default) and not math.isnan(parameter.default) \
+                and not low <= parameter.default <= high:
             yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: default {parameter.default} is outside {low} to {high}",
                          _node(parameter.entry, 11))
 
@@ -390,12 +442,9 @@ def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not _is_int(parameter.descriptor) or not scaling_bit.extract(parameter.descriptor):
             continue  # Figure C.8 writes 0s for scaling that is not used
-        scaling = parameter.scaling
-        for label, value, index in (("multiplier", scaling.multiplier, 12), ("divisor", scaling.divisor, 13),
-                                    ("base", scaling.base, 14)):
-            if value == 0 and _is_int(value):
-                yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling {label} is 0 but the descriptor says "
-                             "scaling is supported", _node(entry, index))
+        if parameter.scaling.divisor == 0 and _is_int(parameter.scaling.divisor):
+            yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling divisor is 0 but the descriptor says scaling "
+                         "is supported; Figure C.5 divides by it", _node(entry, 13))
 
 
 def _expected_data_size(data_type: tables.DataType) -> int | None:
@@ -428,21 +477,6 @@ def enum_descriptor_bits(ctx: Context) -> Iterator[Diagnostic]:
 # --- assemblies ------------------------------------------------------------------------
 
 
-def _member_bits(assembly: Assembly, member: AssemblyMember) -> int | None:
-    """A member's size in bits; an empty Member Size takes the referenced
-    Param's Data Size or Assem's Size (in bytes) times 8. None when unknown."""
-    if _is_int(member.size):
-        return member.size
-    if _written(assembly.entry, member.field_index):
-        return None  # written but not convertible: EDS1xx says why
-    target = member.reference.target if isinstance(member.reference, Reference) else None
-    if isinstance(target, Parameter) and _is_int(target.data_size):
-        return target.data_size * 8
-    if isinstance(target, Assembly) and _is_int(target.size):
-        return target.size * 8
-    return None
-
-
 @check(EMPTY_MEMBER, ASSEMBLY_SIZE_MISMATCH, ASSEMBLY_NOT_WHOLE_BYTES, MODULE_IN_MEMBER)
 def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
     for assembly in ctx.device.assemblies.values():
@@ -459,7 +493,7 @@ def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
             if member.reference == MODULE:
                 yield ctx.at(MODULE_IN_MEMBER, f"{assembly.keyword}: 'Module' is not allowed as a Member Reference; "
                              "use ModuleMemberList in place of the pair", _node(entry, reference_index))
-            bits = _member_bits(assembly, member)
+            bits = ctx.device.member_bits(assembly, member)
             total = total + bits if total is not None and bits is not None else None
         if total is None or assembly.module_member_list or not assembly.members:
             continue
@@ -502,45 +536,40 @@ def _contains(outer: Assembly, wanted: Assembly, seen: set[str]) -> bool:
     return False
 
 
-#: CIP logical segments (segment type 001): bits 0-1 give the value format,
-#: 0 = 8-bit, 1 = 16-bit, 2 = 32-bit; a padded path puts one pad byte before a
-#: 16- or 32-bit value so that every segment is a whole number of 16-bit words.
-_LOGICAL_SEGMENT_TYPE, _SEGMENT_TYPE_MASK = 0x20, 0xE0
-_LOGICAL_VALUE_BYTES = {0: 1, 1: 2, 2: 4}
-
-
-def _packed_segment(path: tuple[PathItem, ...]) -> int | None:
-    """Offset of the first logical segment written in packed form (no pad byte
-    before a 16- or 32-bit value), or None when the path is padded. Walks the
-    leading logical segments only: other segment types (data segments) end it."""
-    data = [item.byte for item in path]
-    offset = 0
-    while offset < len(data) and data[offset] is not None \
-            and data[offset] & _SEGMENT_TYPE_MASK == _LOGICAL_SEGMENT_TYPE:
-        value_bytes = _LOGICAL_VALUE_BYTES.get(data[offset] & 0x03)
-        if value_bytes is None:
-            return None  # special logical format (electronic key): not a packing question
-        if value_bytes == 1:
-            offset += 2
-            continue
-        padded_end = offset + 2 + value_bytes
-        if padded_end > len(data) or data[offset + 1] != 0:
-            return offset
-        offset = padded_end
+def _unpaired_member_size(assembly: Assembly) -> int | None:
+    """0-based index of a last Member Size without its Member Reference; a lone ModuleMemberList of a
+    ProxyAssem stands for a whole pair (C.4.1.5.3.2), as the model reads it."""
+    entry = assembly.entry
+    if entry is None:
+        return None
+    index, end = tables.ASSEM_FIELDS[-2].number - 1, len(entry.fields)
+    while index < end:
+        lone = assembly.family == "ProxyAssem" and entry.fields[index].raw == MODULE_MEMBER_LIST
+        if index + 1 == end and not lone:
+            return index if entry.fields[index].value is not None else None  # empty: EDS323
+        index += 1 if lone else 2
     return None
 
 
-@check(PACKED_EPATH_MEMBER)
-def assembly_member_paths(ctx: Context) -> Iterator[Diagnostic]:
+@check(MEMBER_FIELDS_ODD)
+def assembly_member_pairs(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.8: member fields are Member Size / Member Reference pairs, "making the total number of fields
+    even"."""
     for assembly in ctx.device.assemblies.values():
-        for member in assembly.members:
-            if isinstance(member.reference, tuple):
-                offset = _packed_segment(member.reference)
-                if offset is not None:
-                    path = " ".join(str(item) for item in member.reference)
-                    yield ctx.at(PACKED_EPATH_MEMBER, f"{assembly.keyword}: member path \"{path}\" has a 16- or "
-                                 f"32-bit logical segment at byte {offset} without the pad byte; write the padded "
-                                 "EPATH", _node(assembly.entry, member.field_index + 1))
+        index = _unpaired_member_size(assembly)
+        if index is not None:
+            yield ctx.at(MEMBER_FIELDS_ODD, f"{assembly.keyword}: field {index + 1} is a Member Size without a "
+                         "Member Reference; member fields come in pairs", _node(assembly.entry, index))
+
+
+@check(BAD_MODULE_MEMBER_LIST)
+def module_member_lists(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.5.3.2: ModuleMemberList "shall only be used in place of a Member Size and Member Reference
+    field pair"; in the adapter's file alone, as ``edsconv merge`` reports it."""
+    for assembly in ctx.device.assemblies.values():
+        if assembly.family == "ProxyAssem" and assembly.entry is not None:
+            for item, message in module_member_list_faults(assembly.entry):
+                yield ctx.at(BAD_MODULE_MEMBER_LIST, f"{assembly.keyword} {message}", item)
 
 
 @check(SLOT_MASK_PAIR, SLOT_MASK_WITHOUT_SIZE)
@@ -563,13 +592,14 @@ def slot_masks(ctx: Context) -> Iterator[Diagnostic]:
 
 @check(DUPLICATE_PORT_NUMBER, UNKNOWN_PORT_TYPE)
 def ports(ctx: Context) -> Iterator[Diagnostic]:
-    type_spec = tables.entry_spec("Port", "Port1").fields[0]
+    type_spec = tables.known_entry("Port", "Port1").fields[0]
     first_use: dict[int, int] = {}
     for port in ctx.device.ports:
         if isinstance(port.type_name, str) and port.type_name not in type_spec.choices \
                 and not (type_spec.vendor_keywords and tables.is_vendor_keyword(port.type_name)):
             yield ctx.at(UNKNOWN_PORT_TYPE, f"Port{port.number}: port type {port.type_name!r} is not one of "
-                         f"{', '.join(type_spec.choices)} nor a <VendorID>_<keyword>", _node(port.entry, 0))
+                         f"{', '.join(map(str, type_spec.choices))} nor a <VendorID>_<keyword>",
+                         _node(port.entry, 0))
         if _is_int(port.port_number):
             if port.port_number in first_use:
                 yield ctx.at(DUPLICATE_PORT_NUMBER, f"Port{port.number}: port number {port.port_number} is already "
@@ -578,9 +608,21 @@ def ports(ctx: Context) -> Iterator[Diagnostic]:
                 first_use[port.port_number] = port.number
 
 
-def _modular_entry(device: Device, keyword: str) -> Entry | None:
-    section = device.eds.section("Modular") if device.eds is not None else None
+def _names_this_device(rack: Rack, device: Device) -> bool:
+    """True when a RackN's electronic key is the device's own: vendor, type, product code and major
+    revision (C.4.1.4.3: the minor revision shall not be used to match an EDS to a device)."""
+    identity = device.identity
+    return rack.key[:4] == (identity.vendor_code, identity.product_type, identity.product_code,
+                            identity.major_revision)
+
+
+def _section_entry(device: Device, section_name: str, keyword: str) -> Entry | None:
+    section = device.eds.section(section_name) if device.eds is not None else None
     return section.entry(keyword) if section is not None else None
+
+
+def _modular_entry(device: Device, keyword: str) -> Entry | None:
+    return _section_entry(device, "Modular", keyword)
 
 
 @check(LEGAL_SLOT_OUT_OF_RANGE, WIDTH_ZERO, QUERY_FIELD_VALUE)
@@ -590,23 +632,27 @@ def modular(ctx: Context) -> Iterator[Diagnostic]:
         return
     slots = modular.define_slots_in_rack
     if _is_int(slots):
-        # A file with both DefineSlotsInRack and RackN describes a chassis with
-        # modules of its own: their legal slots are slots of that chassis.
+        # A file with both DefineSlotsInRack and a RackN naming its own chassis describes
+        # a chassis with modules of its own: their legal slots are slots of that chassis.
         for rack in modular.racks:
+            if not _names_this_device(rack, ctx.device):
+                continue  # another chassis: its slots are its own EDS's matter
             for index, slot in enumerate(rack.legal_slots):
                 if slot >= slots:
                     yield ctx.at(LEGAL_SLOT_OUT_OF_RANGE, f"Rack{rack.number}: legal slot {slot} is beyond the "
-                                 f"{slots} slots (0 to {slots - 1}) of DefineSlotsInRack", _node(rack.entry, 8 + index))
+                                 f"{slots} slots (0 to {slots - 1}) of this chassis (DefineSlotsInRack)",
+                                 _node(rack.entry, 8 + index))
     if modular.width == 0:
         yield ctx.at(WIDTH_ZERO, "Width is 0; a module consumes at least one slot", _modular_entry(ctx.device, "Width"))
     if modular.query is not None:
-        query_spec = tables.entry_spec("Modular", "Query")
+        query_spec = tables.known_entry("Modular", "Query")
         entry = _modular_entry(ctx.device, "Query")
         service_spec, size_spec = query_spec.fields[1], query_spec.fields[2]
         if _is_int(modular.query.service) and modular.query.service not in service_spec.choices:
             yield ctx.at(QUERY_FIELD_VALUE, f"Query: service {modular.query.service} is neither 1 (Get_Attributes_All)"
                          " nor 14 (Get_Attribute_Single)", _node(entry, 1))
-        low, high = size_spec.value_range
-        if _is_int(modular.query.id_size) and not low <= modular.query.id_size <= high:
+        low, high = size_spec.value_range or (None, None)
+        if _is_int(modular.query.id_size) and _is_int(low) and _is_int(high) \
+                and not low <= modular.query.id_size <= high:
             yield ctx.at(QUERY_FIELD_VALUE, f"Query: ID size {modular.query.id_size} is outside {low} to {high}",
                          _node(entry, 2))

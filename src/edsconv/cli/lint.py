@@ -51,7 +51,7 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
     Settings come from [tool.edsconv] in pyproject.toml or from edsconv.toml, found
     by walking up from each file; options override them. Exit status: 0 no errors,
     1 errors found (--diff: a file would change), 2 could not run (a bad option, a
-    bad configuration file).
+    bad configuration file, a path without any EDS file).
     """
     overrides = Overrides(select, ignore, warnings_as_errors, config_file, isolated)
     with configuration():
@@ -60,6 +60,8 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
             click.echo("\n".join(resolver.settings_for(p).describe(p) for p in paths), nl=False)
             return EXIT_CLEAN
         reports = lint_paths(paths, jobs=jobs, overrides=overrides, fix=fix or FixMode.REPORT)
+    if not reports:  # a CI job pointed at the wrong folder must not pass
+        raise CannotRun(f"no EDS file (*.eds) found in {', '.join(str(p) for p in paths)}; nothing checked")
     at_least(reports, Severity[min_severity.upper()])
     if fix is FixMode.DIFF:
         return _print_diffs(reports)
@@ -92,8 +94,6 @@ def _print_diffs(reports: list[FileReport]) -> int:
 
 def summary(reports: list[FileReport]) -> str:
     """The last line of the text output: files, diagnostics by severity, what was fixed, what could not be checked."""
-    if not reports:
-        return "no EDS files found"
     failed = sum(r.error is not None for r in reports)
     fixed = sum(len(r.fixed) for r in reports)
     return counts(reports) + (f"; fixed {fixed}" if fixed else "") + \

@@ -21,22 +21,26 @@ from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Se
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
+    PARAMETER_FIELD_ATTRIBUTES,
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
+    CommentNote,
     Connection,
     Device,
     GenericEntry,
     Parameter,
     Reference,
+    parameter_field,
+    parameter_field_type,
 )
-from edsconv.model.build import _Builder
 from edsconv.model.values import PathItem, Revision, StringIMember
 
 # ---------------------------------------------------------------------------------------
 # Values -> syntax
 # ---------------------------------------------------------------------------------------
 
-_NAMED_ESCAPES = {"\\": "\\\\", '"': '\\"', "\n": "\\n", "\t": "\\t", "\v": "\\v", "\b": "\\b",
-                  "\r": "\\r", "\f": "\\f", "\a": "\\a"}
+# Table C.4 backwards; a single quote needs no escape between double quotes.
+_NAMED_ESCAPES = {char: sequence for sequence, char in tables.ESCAPE_SEQUENCES.items() if char != "'"}
 
 
 def needs_unicode(text: str) -> bool:
@@ -207,16 +211,8 @@ def _entry(keyword: str, values: list, required: int = 0) -> Entry:
 # Device -> syntax model
 # ---------------------------------------------------------------------------------------
 
-# the attribute each [File] / [Device] keyword lands in, as the builder maps them
-_FILE_ATTRIBUTES = _Builder._FILE_ATTRIBUTES
-_DEVICE_ATTRIBUTES = _Builder._DEVICE_ATTRIBUTES
-_PARAM_CLASS_ATTRIBUTES = {"MaxInst": "max_instances", "Descriptor": "descriptor", "CfgAssembly": "cfg_assembly"}
-_MODULAR_ATTRIBUTES = {"DefineSlotsInRack": "define_slots_in_rack", "SlotDisplayRule": "slot_display_rule",
-                       "Width": "width", "ExternalID": "external_id", "GenericID": "generic_id",
-                       "ExternIDExactMatch": "extern_id_exact_match"}
-
-
-def _singles(section: str, record, attributes: dict[str, str]) -> list[Entry]:
+def _singles(section: str, record) -> list[Entry]:
+    attributes = SINGLE_ENTRY_ATTRIBUTES[section]
     entries = []
     for spec in tables.SECTIONS[section].entries:
         attribute = attributes.get(spec.keyword)
@@ -228,59 +224,28 @@ def _singles(section: str, record, attributes: dict[str, str]) -> list[Entry]:
     return entries
 
 
-def _param_value_type(parameter: Parameter, attribute: str) -> str:
-    """The type the builder reads a minimum / maximum / default with (Table C.17)."""
-    data_type = parameter.data_type
-    if data_type is None:
-        return "plain"
-    if attribute != "default" and tables.min_max_rule(data_type.name).meaning == "length":
-        return "UINT"
-    if data_type.kind in ("string", "epath"):
-        return "EDS_Char_Array"
-    if data_type.kind == "stringi" or data_type.size is None:
-        return "plain"
-    return data_type.name
-
-
 def _param_values(parameter: Parameter, values, proxy: bool) -> list:
-    return [render_value(v, _param_value_type(parameter, a), proxy)
+    return [render_value(v, parameter.value_type(a), proxy)
             for v, a in zip(values, ("minimum", "maximum", "default"), strict=True)]
 
 
 def _parameter_entries(parameter: Parameter) -> list[Entry]:
+    # C.4.1.5.3.1: any field of a ProxyParam may be Module
     proxy = parameter.family == "ProxyParam"
-    s = parameter.scaling
-    code = parameter.data_type_code
-    fields = [
-        Scalar("0"),
-        render_value(parameter.link_path_size, "USINT"),
-        render_value(parameter.link_path, "EPATH"),
-        render_value(parameter.descriptor, "WORD", proxy),
-        render_value(code, "code", proxy),
-        render_value(parameter.data_size, "USINT", proxy),
-        render_value(parameter.name, "EDS_Char_Array", proxy),
-        render_value(parameter.units, "EDS_Char_Array", proxy),
-        render_value(parameter.help, "EDS_Char_Array", proxy),
-        *_param_values(parameter, (parameter.minimum, parameter.maximum, parameter.default), proxy),
-        *(render_value(v, t) for v, t in ((s.multiplier, "UINT"), (s.divisor, "UINT"), (s.base, "UINT"),
-                                          (s.offset, "INT"), (s.multiplier_link, "UINT"),
-                                          (s.divisor_link, "UINT"), (s.base_link, "UINT"),
-                                          (s.offset_link, "UINT"), (s.decimal_precision, "USINT"))),
-        render_value(parameter.international_name), render_value(parameter.international_units),
-        render_value(parameter.international_help),
-    ]
+    fields = [Scalar("0")]  # field 1 is reserved and shall be 0
+    for attribute in PARAMETER_FIELD_ATTRIBUTES[1:]:
+        type_name = parameter_field_type(attribute) or parameter.value_type(attribute)
+        fields.append(render_value(parameter_field(parameter, attribute), type_name, proxy))
     spec = tables.entry_spec("Params", parameter.keyword)
     entries = [_entry(parameter.keyword, fields, spec.required_count if spec else 0)]
     number = parameter.number
     if parameter.size_adder is not None:
         entries.append(_entry(f"ProxyParamSizeAdder{number}", _param_values(parameter, parameter.size_adder, False), 3))
     if parameter.enum is not None:
-        family = {"Param": "Enum", "ProxyParam": "ProxyEnum", "ProxiedParam": "ProxiedEnum"}[parameter.family]
-        data_type = parameter.data_type
-        key_type = data_type.name if data_type and data_type.kind in ("unsigned", "signed", "bits", "bool") else "LINT"
+        family = tables.ENUM_FAMILIES[parameter.family]
         values: list = []
         for key, text in parameter.enum.items():
-            values += [render_value(key, key_type), render_value(text, "EDS_Char_Array")]
+            values += [render_value(key, parameter.enum_key_type), render_value(text, "EDS_Char_Array")]
         entries.append(Entry(f"{family}{number}", [Field(v) for v in values] or [Field(None)]))
     return entries
 
@@ -324,14 +289,14 @@ def _family_sorted(records: dict, families: tuple[str, ...]):
 
 def _known_sections(device: Device) -> dict[str, list[Entry]]:
     out: dict[str, list[Entry]] = {}
-    out["File"] = _singles("File", device.file, _FILE_ATTRIBUTES)
-    out["Device"] = _singles("Device", device.identity, _DEVICE_ATTRIBUTES)
+    out["File"] = _singles("File", device.file)
+    out["Device"] = _singles("Device", device.identity)
     out["Device Classification"] = [
         _entry(f"Class{c.number}", [render_value(c.classification, "Keyword"),
                                     *(plain_value(s, keywords=True) for s in c.subclassifications)])
         for c in _numbered(device.classifications)]
     if device.param_class is not None:
-        entries = _singles("ParamClass", device.param_class, _PARAM_CLASS_ATTRIBUTES)
+        entries = _singles("ParamClass", device.param_class)
         out["ParamClass"] = entries or [Entry("MaxInst", [Field(None)])]
     out["Params"] = [e for p in _family_sorted(device.parameters, ("Param", "ProxyParam", "ProxiedParam"))
                      for e in _parameter_entries(p)]
@@ -357,7 +322,7 @@ def _known_sections(device: Device) -> dict[str, list[Entry]]:
     out["Port"] = ports
     modular = device.modular
     if modular is not None:
-        entries = _singles("Modular", modular, _MODULAR_ATTRIBUTES)
+        entries = _singles("Modular", modular)
         racks = [_entry(f"Rack{r.number}", [*(render_value(v, "UINT") for v in r.key), None, None, None,
                                              *(render_value(s, "UINT") for s in r.legal_slots)], 5)
                  for r in _numbered(modular.racks)]
@@ -397,35 +362,33 @@ def device_to_eds(device: Device) -> EdsFile:
     return eds
 
 
-def attach_comments(eds: EdsFile, notes) -> None:
-    """Put each CommentNote back on its section / entry / field. A note whose field is
-    gone goes to the entry's last field; one whose entry is gone to its section's
-    leading comments; one whose section is gone to the end of the file."""
+def attach_comments(eds: EdsFile, notes: Iterable[CommentNote]) -> None:
+    """Put each CommentNote back on its section / entry / field. A note on a trailing
+    empty field the entry dropped brings that field back (empty), so the comment stays
+    with the field it describes; one whose entry is gone goes to its section's leading
+    comments; one whose section is gone to the end of the file."""
     sections: dict[str, Section] = {}
-    for section in eds.sections:
-        sections.setdefault(section.name, section)
     entries: dict[tuple[str, str], Entry] = {}
-    for section in eds.sections:
-        for entry in section.entries:
-            entries.setdefault((section.name, entry.keyword), entry)
+    for each_section in eds.sections:
+        sections.setdefault(each_section.name, each_section)
+        for each_entry in each_section.entries:
+            entries.setdefault((each_section.name, each_entry.keyword), each_entry)
     for note in notes:
         comment = Comment(note.text)
         section = sections.get(note.section)
         if section is None:
             eds.trailing_comments.append(comment)
-            continue
-        if note.keyword is None:
+        elif note.keyword is None:
             (section.leading_comments if note.leading else section.comments).append(comment)
-            continue
-        entry = entries.get((note.section, note.keyword))
-        if entry is None:
+        elif (entry := entries.get((note.section, note.keyword))) is None:
             section.leading_comments.append(comment)
         elif note.leading:
             entry.leading_comments.append(comment)
         elif note.field is None:
             entry.comments.append(comment)
         else:
-            entry.fields[min(note.field, len(entry.fields) - 1)].comments.append(comment)
+            entry.fields.extend(Field(None) for _ in range(note.field + 1 - len(entry.fields)))
+            entry.fields[note.field].comments.append(comment)
 
 
 __all__ = ["attach_comments", "device_to_eds", "hex_text", "needs_unicode", "path_text", "plain_value", "quote",

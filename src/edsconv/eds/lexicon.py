@@ -11,15 +11,15 @@ from __future__ import annotations
 import functools
 import hashlib
 import json
-import os
 import re
-import tempfile
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 import lark
 from lark.load_grammar import load_grammar
 
+from edsconv import cache
 from edsconv.resources import data_dir
 
 #: The order in which a scalar is classified; the grammar's SCALAR accepts the union.
@@ -47,33 +47,37 @@ def grammar_text() -> str:
 _WANTED = ("STRING", "STRING_PART", "ESCAPE", "KEYWORD", "SCALAR", *SCALAR_KINDS)
 
 
-def _terminal_patterns() -> dict[str, str]:
-    """The regexes of the wanted terminals; cached on disk like Lark's own tables.
+def cache_file(text: str) -> Path:
+    """Where the terminal patterns of grammar ``text`` are cached (by grammar and Lark version)."""
+    key = hashlib.sha256(f"{lark.__version__}\n{text}".encode()).hexdigest()[:20]
+    return cache.cache_dir() / f"lexicon-{key}.json"
+
+
+def terminal_patterns() -> dict[str, str]:
+    """The regexes of the wanted terminals; kept in the per-user cache (:mod:`edsconv.cache`).
 
     Compiling the grammar costs ~40 ms, a large share of a short run's start-up.
     """
     text = grammar_text()
-    key = hashlib.sha256(f"{lark.__version__}\n{text}".encode()).hexdigest()[:20]
-    cache = Path(tempfile.gettempdir()) / f".edsconv_lexicon_{key}.json"
-    try:
-        return json.loads(cache.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        pass
+    path = cache_file(text)
+    data = cache.read_file(path)
+    if data is not None:
+        try:
+            cached = json.loads(data)
+        except ValueError:
+            cached = None  # damaged: computed and written again
+        if isinstance(cached, dict) and all(isinstance(cached.get(name), str) for name in _WANTED):
+            return cached
     grammar, _ = load_grammar(text, "eds.lark", [], False)
     terminals, _, _ = grammar.compile(["start"], set(_WANTED))
     patterns = {t.name: t.pattern.to_regexp() for t in terminals if t.name in _WANTED}
-    try:
-        with tempfile.NamedTemporaryFile("w", dir=cache.parent, delete=False, encoding="utf-8") as temporary:
-            json.dump(patterns, temporary)
-        os.replace(temporary.name, cache)
-    except OSError:
-        pass  # a read-only temp dir only costs start-up time
+    cache.write_file(path, json.dumps(patterns).encode())
     return patterns
 
 
 @functools.cache
 def lexicon() -> Lexicon:
-    pattern = _terminal_patterns()
+    pattern = terminal_patterns()
     blank = r"[ \t\n\f\v]*"
     run_piece = re.compile(
         rf"{blank}(?:(\$[^\n]*)|(?:({pattern['STRING']})|({pattern['SCALAR']}))?{blank}(,)?)")
@@ -94,4 +98,19 @@ def scalar_kind(raw: str) -> str:
     Cached: the same spellings ("0", "0x0000", "Param1") recur all over a file.
     """
     match = lexicon().scalar_kind.fullmatch(raw)
-    return match.lastgroup if match else ""
+    return (match.lastgroup or "") if match else ""
+
+
+_BACKSLASH_PAIR = re.compile(r"\\.")
+
+
+def undefined_escapes(raw: str, unicode: bool) -> Iterator[tuple[int, str, bool]]:
+    """(offset in ``raw``, sequence, defined) of each escape of a string's spelling that is not
+    valid there: not in Table C.4 (``defined`` False), or ``\\u`` outside an ``L"..."`` string
+    (C.4.1.3.3.5)."""
+    escape = lexicon().escape
+    for found in _BACKSLASH_PAIR.finditer(raw):
+        if not escape.match(raw, found.start()):
+            yield found.start(), found.group(), False
+        elif found.group() == "\\u" and not unicode:
+            yield found.start(), found.group(), True

@@ -11,6 +11,7 @@ the text up to the next ``;`` or statement start is kept verbatim as
 from __future__ import annotations
 
 import bisect
+import contextlib
 import gc
 import re
 import threading
@@ -19,8 +20,9 @@ from pathlib import Path
 from lark import Lark, Token, Transformer
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
-from edsconv.diagnostics import Diagnostic
-from edsconv.eds.lexicon import grammar_text, lexicon
+from edsconv import spec_tables as tables
+from edsconv.diagnostics import Diagnostic, Rule
+from edsconv.eds.lexicon import grammar_text, lexicon, undefined_escapes
 from edsconv.eds.reader_rules import (
     BAD_ESCAPE,
     CANOPEN_EDS,
@@ -60,7 +62,6 @@ MAX_SYNTAX_ERRORS = 100
 MAX_BRACE_DEPTH = 64
 
 _COMMENT = re.compile(r"\$[^\n]*")
-_SECTION_NAME = re.compile(r"[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
 _WHITESPACE_AND_COMMENTS = re.compile(r"(?:[ \t\n\f\v\x1a]|\$[^\n]*)*")
 _CANOPEN_SECTION = re.compile(r"^[ \t]*\[(?:FileInfo|DeviceInfo|MandatoryObjects|[0-9A-Fa-f]{4})\][ \t]*$",
                               re.MULTILINE | re.IGNORECASE)
@@ -113,17 +114,25 @@ class _Builder(Transformer):
         self.base = 0
         self.lexicon = lexicon()
         self.eds = EdsFile(path=path)
-        self.section: Section | None = None
+        # the section being read; not named `section`, which is the rule callback Lark calls
+        self.current_section: Section | None = None
         self.seen_sections: dict[str, Section] = {}
         self.seen_entries: dict[str, Entry] = {}
         # (offset, Comment) for the comments between tokens, attached at the end
         self.comments: list[tuple[int, Comment]] = []
         # (start, end of its last line, node, every field in document order) per statement
-        self.statements: list[tuple[int, int, Section | Entry, list[int], list[Field]]] = []
+        self.statements: list[tuple[int, int, Section | Entry | Unparsed, list[Field]]] = []
         self.last_end = 0
         self.unparsed_ranges: list[tuple[int, int]] = []
 
     # --- diagnostics and positions -------------------------------------------------
+    def token_start(self, token: Token) -> int:
+        """Offset of a token in the whole text (tokens of the lexer always carry positions)."""
+        return self.base + (token.start_pos or 0)
+
+    def token_end(self, token: Token) -> int:
+        return self.base + (token.end_pos or 0)
+
     def report(self, rule_, message: str, offset: int) -> None:
         line, column = self.lines.position(offset)
         self.eds.diagnostics.append(Diagnostic.of(rule_, message, line, column, self.path))
@@ -131,7 +140,7 @@ class _Builder(Transformer):
     def on_trivia(self, token: Token) -> None:
         """Comments between tokens; their owners are known only after the parse."""
         if "$" in token.value:
-            start = self.base + token.start_pos
+            start = self.token_start(token)
             for comment in _COMMENT.finditer(token.value):
                 offset = start + comment.start()
                 self.comments.append((offset, Comment(comment.group()[1:], offset, self.lines)))
@@ -142,10 +151,10 @@ class _Builder(Transformer):
 
     def section(self, children: list[Token]) -> None:
         token = children[0]
-        start = self.base + token.start_pos
+        start = self.token_start(token)
         name = token.value[1:-1]
         section = Section(name=name.strip(), offset=start, source=self.lines)
-        if not _SECTION_NAME.fullmatch(name):
+        if not tables.SECTION_KEYWORD_RE.fullmatch(name):
             self.report(SECTION_NAME, f"section name [{name}] uses characters or spacing outside the keyword "
                         "rules of ISO 15745-4 (letters, digits, '_', single inner spaces)", start)
         first = self.seen_sections.get(section.name)
@@ -155,14 +164,15 @@ class _Builder(Transformer):
         else:
             self.seen_sections[section.name] = section
         self.eds.sections.append(section)
-        self.section = section
+        self.current_section = section
         self.seen_entries = {}
-        self._record_statement(start, self.base + token.end_pos, section, [])
+        self._record_statement(start, self.token_end(token), section, [])
 
     def entry(self, children: list) -> None:
         start_token, semicolon = children[0], children[-1]
         start = self.base + start_token.start_pos
-        keyword = self.lexicon.entry_keyword.match(start_token.value).group()
+        match = self.lexicon.entry_keyword.match(start_token.value)
+        keyword = match.group() if match else start_token.value  # ENTRY_START begins with its keyword
         end = self.base + semicolon.end_pos
         depth = max((child[4] for child in children[1:-1] if isinstance(child, tuple)), default=0)
         if depth > MAX_BRACE_DEPTH:
@@ -173,7 +183,7 @@ class _Builder(Transformer):
         flat: list[Field] = []
         fields = self.fields(children[1:-1], self.base + semicolon.start_pos, flat)
         entry = Entry(keyword, fields, offset=start, end_offset=end, source=self.lines)
-        section = self.section
+        section = self.current_section
         if section is None:
             self.report(ENTRY_OUTSIDE_SECTION, f"entry {keyword} stands before the first section header", start)
             section = self.eds.preamble = self.eds.preamble or Section(name="", offset=start, source=self.lines)
@@ -232,8 +242,7 @@ class _Builder(Transformer):
         This loop runs once per field of the file: keep it lean.
         """
         lines = self.lines
-        base = self.base
-        for piece in self.lexicon.run_piece.finditer(self.text, base + token.start_pos, base + token.end_pos):
+        for piece in self.lexicon.run_piece.finditer(self.text, self.token_start(token), self.token_end(token)):
             comment, string, scalar, comma = piece.groups()
             if comment is not None:
                 # A RUN starts with a field, so one exists, and the last one
@@ -278,14 +287,13 @@ class _Builder(Transformer):
         return String(tuple(parts))
 
     def check_escapes(self, raw: str, offset: int, unicode: bool) -> None:
-        for escape in re.finditer(r"\\.", raw):
-            at = offset + escape.start()
-            if not self.lexicon.escape.match(raw, escape.start()):
-                self.report(BAD_ESCAPE, f"escape sequence {escape.group()!r} is not defined in Table C.4; the "
-                            "string is rejected (write '\\\\' for a backslash)", at)
-            elif escape.group() == "\\u" and not unicode:
+        for at, sequence, defined in undefined_escapes(raw, unicode):
+            if not defined:
+                self.report(BAD_ESCAPE, f"escape sequence {sequence!r} is not defined in Table C.4; the "
+                            "string is rejected (write '\\\\' for a backslash)", offset + at)
+            else:
                 self.report(UNICODE_ESCAPE_IN_ASCII, "\\u escapes are valid only in L\"...\" (UNICODE) "
-                            "strings", at)
+                            "strings", offset + at)
 
     # --- after the parse -----------------------------------------------------------
     def attach_comments(self) -> None:
@@ -309,11 +317,12 @@ class _Builder(Transformer):
             statements[index][2].leading_comments.extend(comments)
 
     def keep_unparsed(self, start: int, end: int) -> None:
-        start = _WHITESPACE_AND_COMMENTS.match(self.text, start, end).end()
+        blank = _WHITESPACE_AND_COMMENTS.match(self.text, start, end)  # matches, if only the empty string
+        start = blank.end() if blank else start
         if start >= end:
             return
         self.unparsed_ranges.append((start, end))
-        section = self.section
+        section = self.current_section
         if section is None:
             section = self.eds.preamble = self.eds.preamble or Section(name="", offset=start, source=self.lines)
         unparsed = Unparsed(self.text[start:end].rstrip(), offset=start, source=self.lines)
@@ -393,14 +402,16 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
 
     def on_error(error: UnexpectedInput) -> bool:
         """Insert a missing ';' and go on; otherwise keep what is complete and give up."""
+        accepted = error.interactive_parser.accepts() if isinstance(error, UnexpectedToken) else set()
         if not (isinstance(error, UnexpectedToken) and error.token.type in ("ENTRY_START", "SECTION", "$END")
-                and "SEMICOLON" in error.interactive_parser.accepts()):
+                and "SEMICOLON" in accepted):
+            error.accepted = accepted  # type: ignore[attr-defined]  # for the message: the reduction spends the parser
             _reduce_complete_statements(error)
             return False
         stack = error.interactive_parser.parser_state.value_stack
         last = stack[-1] if stack else None
         if isinstance(last, Token):
-            after = builder.base + last.end_pos
+            after = builder.token_end(last)
         elif isinstance(last, tuple):
             after = last[2] + 1
         else:
@@ -443,21 +454,19 @@ def _reduce_complete_statements(error: UnexpectedInput) -> None:
     parser = getattr(error, "interactive_parser", None)
     if parser is None:
         return
-    try:
+    with contextlib.suppress(UnexpectedInput):  # the text before the error ends inside an entry
         parser.feed_eof()
-    except UnexpectedInput:
-        pass  # the text before the error ends inside an entry: nothing complete to keep
 
 
 def _error_offset(error: UnexpectedInput, text: str, base: int) -> int:
     if isinstance(error, UnexpectedCharacters):
-        return base + error.pos_in_stream
+        return base + (error.pos_in_stream or 0)
     if isinstance(error, UnexpectedToken) and error.token.start_pos is not None:
         return base + error.token.start_pos
     return len(text)
 
 
-def _error_message(error: UnexpectedInput, text: str, position: int):
+def _error_message(error: UnexpectedInput, text: str, position: int) -> tuple[Rule, str]:
     if isinstance(error, UnexpectedCharacters):
         character = text[position]
         if character == '"':
@@ -473,7 +482,10 @@ def _error_message(error: UnexpectedInput, text: str, position: int):
     if error.token.type == "RUN" and "SEMICOLON" in error.expected:
         return MISSING_COMMA, f"a ',' is missing before {_describe(error.token)}"
     # accepts() asks the parser state itself; ``expected`` is blurred by LALR's merged states.
-    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(error.interactive_parser.accepts())}"
+    accepted = getattr(error, "accepted", None)
+    if accepted is None:
+        accepted = error.interactive_parser.accepts()
+    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(accepted)}"
 
 
 def _starts_statement(error: UnexpectedInput) -> bool:

@@ -19,6 +19,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
+from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lexicon import scalar_kind
 from edsconv.eds.source import LineIndex
@@ -33,6 +34,9 @@ class Located:
     """
 
     __slots__ = ()
+    # declared by each node class (annotations only: this mixin is not a dataclass)
+    offset: int
+    source: LineIndex | None
 
     @property
     def line(self) -> int:
@@ -74,7 +78,7 @@ class Comment(Located):
     @property
     def own_line(self) -> bool:
         """True when nothing but white space precedes it on its line."""
-        return bool(self.source) and self.source.starts_line(self.offset)
+        return self.source is not None and self.source.starts_line(self.offset)
 
 
 @dataclass(slots=True)
@@ -92,8 +96,10 @@ class Scalar:
         return _KINDS[kind]
 
 
-_ESCAPES = {"\\": "\\", "n": "\n", "t": "\t", "v": "\v", "b": "\b", "r": "\r", "f": "\f", "a": "\a", '"': '"', "'": "'"}
-_ESCAPE_SEQUENCE = re.compile(r"\\(x[0-9A-Fa-f]{2}|u[0-9A-Fa-f]{4}|.)")
+# Table C.4: the letter after the backslash -> the character; \x and \u take hex digits.
+_ESCAPES = {sequence[1:]: char for sequence, char in tables.ESCAPE_SEQUENCES.items()}
+_ESCAPE_SEQUENCE = re.compile("\\\\(" + "".join(f"{sequence[1:]}[0-9A-Fa-f]{{{digits}}}|"
+                                              for sequence, digits in tables.NUMERIC_ESCAPES.items()) + ".)")
 
 
 def _unescape(match: re.Match[str]) -> str:
@@ -272,40 +278,6 @@ class EdsFile:
         from edsconv.diagnostics import has_errors
 
         return has_errors(self.diagnostics)
-
-
-@dataclass(frozen=True, slots=True)
-class StringIMember:
-    """One language of a STRINGI value (C.4.1.3.5)."""
-
-    language: str
-    type_code: str
-    charset: str
-    text: str
-
-
-def stringi_members(group: Group) -> list[StringIMember]:
-    """Split a STRINGI brace group ``{n, {"eng",0xD0,4,"..."}, ...}`` into its languages.
-
-    Raises ValueError when the group is not shaped like a STRINGI.
-    """
-    if not group.fields or not isinstance(group.fields[0].value, Scalar):
-        raise ValueError("a STRINGI starts with the number of languages")
-    members = []
-    for member_field in group.fields[1:]:
-        member = member_field.value
-        if not isinstance(member, Group) or len(member.fields) != 4:
-            raise ValueError("each STRINGI language is a group of four fields")
-        language, type_code, charset, content = (f.value for f in member.fields)
-        if not isinstance(language, String) or not isinstance(content, String):
-            raise ValueError("a STRINGI language code and its content are strings")
-        if not isinstance(type_code, Scalar) or not isinstance(charset, Scalar):
-            raise ValueError("a STRINGI data type and character set are numbers")
-        members.append(StringIMember(language.text, type_code.raw, charset.raw, content.text))
-    declared = group.fields[0].value.raw
-    if not declared.isdigit() or int(declared) != len(members):
-        raise ValueError(f"the STRINGI declares {declared} languages but lists {len(members)}")
-    return members
 
 
 def _comments_json(comments: list[Comment]) -> list[str]:

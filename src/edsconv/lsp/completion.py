@@ -64,6 +64,8 @@ def next_number(section: Section, family: str) -> int:
 
 
 def field_values(spot: Spot, analysis: Analysis) -> list[types.CompletionItem]:
+    if spot.section is None or spot.entry is None:
+        return []
     spec = tables.entry_spec(spot.section.name, spot.entry.keyword)
     index = spot.field_path[0] if spot.field_path else 0
     field_spec = spec.field_at(index + 1) if spec is not None else None

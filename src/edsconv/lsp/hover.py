@@ -87,7 +87,9 @@ def entry_text(section: Section | None, entry: Entry) -> str:
 
 
 def field_text(spot: Spot, device: Device) -> str:
-    entry, index = spot.entry, spot.field_path[0]
+    entry, item, index = spot.entry, spot.field, spot.field_path[0]
+    if entry is None or item is None:
+        return ""
     spec = tables.entry_spec(spot.section.name, entry.keyword) if spot.section is not None else None
     field_spec = spec.field_at(index + 1) if spec is not None else None
     if field_spec is None:
@@ -101,11 +103,11 @@ def field_text(spot: Spot, device: Device) -> str:
         lines.append("Allowed: " + ", ".join(f"`{choice}`" for choice in field_spec.choices))
     lines.append(_range_text(field_spec))
     if field_spec.name == "Data Type":
-        lines.append(_data_type_text(spot.field))
+        lines.append(_data_type_text(item))
     if field_spec.bits and len(spot.field_path) == 1:
-        lines.extend(bits_text(field_spec.bits, spot.field, device.connections.get(entry.keyword)))
-    if "EPATH" in field_spec.alternatives and isinstance(spot.field.value, String):
-        lines.append(_path_text(spot.field.value, device))
+        lines.extend(bits_text(field_spec.bits, item, device.connections.get(entry.keyword)))
+    if "EPATH" in field_spec.alternatives and isinstance(item.value, String):
+        lines.append(_path_text(item.value, device))
     return "\n\n".join(line for line in lines if line)
 
 
@@ -157,9 +159,11 @@ def bits_text(table_name: str, item: Field, connection: Connection | None) -> li
     except ValueProblem:
         return []
     if connection is not None and table is tables.TRIGGER_TRANSPORT_BITS:
-        return [_trigger_transport_text(describe.describe_trigger_transport(connection))]
+        doc = describe.describe_trigger_transport(connection)
+        return [_trigger_transport_text(doc)] if doc is not None else []
     if connection is not None and table is tables.CONNECTION_PARAMETER_BITS:
-        return [_connection_parameters_text(describe.describe_connection_parameters(connection))]
+        doc = describe.describe_connection_parameters(connection)
+        return [_connection_parameters_text(doc)] if doc is not None else []
     rows = [f"- bit {f.first_bit}: {f.name}: {meaning}" if f.width == 1 else
             f"- bits {f.first_bit}-{f.first_bit + f.width - 1}: {f.name}: {meaning}"
             for f, bits, meaning in tables.decode_bits(value, table) if bits or f.width > 1]

@@ -8,6 +8,8 @@ the decoder of CIP paths for people and :mod:`edsconv.model.plain` model values 
 from edsconv.model.device import (
     MODULE,
     MODULE_MEMBER_LIST,
+    PARAMETER_FIELD_ATTRIBUTES,
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     AssemblyMember,
     Classification,
@@ -28,11 +30,14 @@ from edsconv.model.device import (
     Rack,
     Reference,
     Scaling,
+    parameter_field,
+    parameter_field_type,
 )
 
 __all__ = [
     "Assembly", "AssemblyMember", "Classification", "CommentNote", "Connection",
     "ConnectionEndpoint", "Device", "FileDescription", "GenericEntry", "GenericSection", "Identity",
     "MODULE", "MODULE_MEMBER_LIST", "Modular", "ParamClass", "Parameter", "ParameterGroup", "Port",
-    "Query", "Rack", "Reference", "Scaling",
+    "PARAMETER_FIELD_ATTRIBUTES", "Query", "Rack", "Reference", "SINGLE_ENTRY_ATTRIBUTES", "Scaling",
+    "parameter_field", "parameter_field_type",
 ]

@@ -20,6 +20,7 @@ from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String, Value, Val
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
+    SINGLE_ENTRY_ATTRIBUTES,
     Assembly,
     AssemblyMember,
     Classification,
@@ -37,8 +38,8 @@ from edsconv.model import (
     Query,
     Rack,
     Reference,
-    Scaling,
 )
+from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES, set_parameter_field
 from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
 
 OBSOLETE_DATA_TYPE = rule(
@@ -61,12 +62,17 @@ UNKNOWN_DATA_TYPE = rule(
 )
 
 _REFERENCE_KINDS = ("ParamRef", "ProxyParamRef", "AssemRef", "ProxyAssemRef")
-_REFERENCE = {kind: re.compile(tables.FIELD_VALUE_KINDS[kind]) for kind in _REFERENCE_KINDS}
-_MEMBER_KEYWORD = re.compile(tables.FIELD_VALUE_KINDS["MemberKeyword"])
-_NUMBERED_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
-# AssemExaN: the extended assembly of CIP editions after 2003 (its size may be a
-# ParamN); real files name it where an AssemN may stand.
-_NEWER_ASSEMBLY = re.compile(r"AssemExa[1-9][0-9]*")
+
+
+def _kind_pattern(kind: str) -> re.Pattern[str]:
+    pattern = tables.FIELD_VALUE_KINDS[kind]
+    if pattern is None:
+        raise KeyError(f"{kind} has no lexical form")
+    return re.compile(pattern)
+
+
+_REFERENCE = {kind: _kind_pattern(kind) for kind in _REFERENCE_KINDS}
+_MEMBER_KEYWORD = _kind_pattern("MemberKeyword")
 
 
 @dataclass(frozen=True, slots=True)
@@ -91,13 +97,6 @@ def _plan(type_name: str) -> _Plan:
                  "MemberKeyword" in kinds, "EPATH" in kinds, data_types[0] if data_types else None, names)
 
 
-def reference(keyword: str, entry: Entry | None = None, field_index: int = 0) -> Reference:
-    """A Reference from ``Param3``; newer files also address a bit: ``Param10:0``."""
-    family, number, bit = _NUMBERED_REFERENCE.fullmatch(keyword).groups()
-    return Reference(f"{family}{number}", family, int(number), entry=entry, field_index=field_index,
-                     bit=int(bit) if bit is not None else None)
-
-
 def plain(value: Value | None):
     """A syntax value as plain data: None, a string's text, a scalar's spelling, a list."""
     if value is None:
@@ -116,6 +115,10 @@ def as_written(value: Value | None):
     return value
 
 
+# Table C.17: these fields are read by the parameter's data type, once that is known
+_TYPED_BY_DATA_TYPE = ("minimum", "maximum", "default")
+
+
 class _Builder:
     def __init__(self, eds: EdsFile) -> None:
         self.eds = eds
@@ -123,14 +126,17 @@ class _Builder:
         self.diagnostics = self.device.diagnostics
         self.enums: list[tuple[str, Entry]] = []
         self.size_adders: list[Entry] = []
+        self.section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
 
     # --- diagnostics and field conversion --------------------------------------------
-    def report(self, rule_, message: str, node) -> None:
-        self.diagnostics.append(Diagnostic.of(rule_, message, node.line, node.column, self.eds.path))
+    def report(self, rule_, message: str, node, clause: str = "") -> None:
+        self.diagnostics.append(Diagnostic.of(rule_, message, node.line, node.column, self.eds.path, clause=clause))
 
     def value(self, entry: Entry, index: int, type_name: str, *, proxy: bool = False) -> Any:
         """Field ``index`` (0-based) of ``entry`` converted to ``type_name``; None when
-        empty or not convertible (then a diagnostic says why)."""
+        empty or without a reading (then a diagnostic says why). A value that breaks a
+        rule but has one reading is returned, and marked erroneous when the rule is an
+        error (:attr:`Device.erroneous`)."""
         if index >= len(entry.fields):
             return None
         field = entry.fields[index]
@@ -138,12 +144,15 @@ class _Builder:
             return None
         try:
             return self.convert(field.value, type_name, proxy, entry, index)
-        except ValueNote as note:
-            self.report(note.rule, f"{entry.keyword} field {index + 1}: {note.message}", field)
-            return note.value
         except ValueProblem as problem:
-            self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field)
-            return None
+            if not problem.reported:
+                self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field,
+                            problem.clause)
+            if not isinstance(problem, ValueNote):
+                return None
+            if problem.rule.severity is Severity.ERROR:
+                self.device.erroneous[(self.section_of[id(entry)], entry.keyword, index)] = problem.rule.code
+            return problem.value
 
     def convert(self, value: Value, type_name: str, proxy: bool, entry: Entry, index: int) -> Any:
         plan = _plan(type_name)
@@ -151,10 +160,11 @@ class _Builder:
             raw = value.raw
             if proxy and raw in (MODULE, MODULE_MEMBER_LIST):
                 return raw
-            bare = raw.partition(":")[0]
-            if any(pattern.fullmatch(bare) for pattern in plan.references) or (
-                    plan.newer_assembly and _NEWER_ASSEMBLY.fullmatch(raw)):
-                return reference(raw, entry, index)
+            found = Reference.parse(raw, entry, index)
+            # AssemExaN (no bit) stands where an AssemN may (see spec_tables.REFERENCE_RE)
+            if found is not None and (any(pattern.fullmatch(found.keyword) for pattern in plan.references) or (
+                    plan.newer_assembly and found.family == "AssemExa" and found.bit is None)):
+                return found
             if plan.member_keyword and _MEMBER_KEYWORD.fullmatch(raw):
                 return raw
         if plan.path and isinstance(value, String):
@@ -179,8 +189,8 @@ class _Builder:
     # --- sections --------------------------------------------------------------------
     def build(self) -> Device:
         handlers = {
-            "File": self.file_entry, "Device": self.device_entry, "Device Classification": self.classification,
-            "ParamClass": self.param_class, "Params": self.params_entry, "Groups": self.group,
+            "File": self.single_entry, "Device": self.single_entry, "Device Classification": self.classification,
+            "ParamClass": self.single_entry, "Params": self.params_entry, "Groups": self.group,
             "Assembly": self.assembly_entry, "Connection Manager": self.connection, "Port": self.port,
             "Modular": self.modular_entry,
         }
@@ -225,36 +235,27 @@ class _Builder:
     def single(self, entry: Entry, spec: tables.EntrySpec) -> Any:
         return self.value(entry, 0, spec.fields[0].eds_type)
 
-    _FILE_ATTRIBUTES = {"DescText": "description", "CreateDate": "create_date", "CreateTime": "create_time",
-                        "ModDate": "mod_date", "ModTime": "mod_time", "Revision": "revision", "HomeURL": "home_url"}
-    _DEVICE_ATTRIBUTES = {
-        "VendCode": "vendor_code", "VendName": "vendor_name", "ProdType": "product_type",
-        "ProdTypeStr": "product_type_string", "ProdCode": "product_code", "MajRev": "major_revision",
-        "MinRev": "minor_revision", "ProdName": "product_name", "Catalog": "catalog", "Icon": "icon",
-        "ExcludeFromAdapterRackConnection": "exclude_from_adapter_rack_connection",
-    }
-
-    def file_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        setattr(self.device.file, self._FILE_ATTRIBUTES[spec.keyword], self.single(entry, spec))
-
-    def device_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        setattr(self.device.identity, self._DEVICE_ATTRIBUTES[spec.keyword], self.single(entry, spec))
+    def single_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        """An entry of [File], [Device] or [ParamClass]: one field into its attribute."""
+        section = spec.section
+        if section == "File":
+            record: Any = self.device.file
+        elif section == "Device":
+            record = self.device.identity
+        else:
+            record = self.device.param_class = self.device.param_class or ParamClass()
+        setattr(record, SINGLE_ENTRY_ATTRIBUTES[section][spec.keyword], self.single(entry, spec))
 
     def classification(self, entry: Entry, spec: tables.EntrySpec) -> None:
         values = [plain(f.value) for f in entry.fields]
-        number = tables.split_numbered(entry.keyword)[1]
+        number = tables.instance_number(entry.keyword)
         self.device.classifications.append(Classification(
             number, self.value(entry, 0, "Keyword"), tuple(v for v in values[1:] if v is not None), entry))
 
-    def param_class(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        param_class = self.device.param_class = self.device.param_class or ParamClass()
-        attribute = {"MaxInst": "max_instances", "Descriptor": "descriptor", "CfgAssembly": "cfg_assembly"}
-        setattr(param_class, attribute[spec.keyword], self.single(entry, spec))
-
     # --- [Params] ----------------------------------------------------------------------
     def params_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        if spec.keyword in ("Enum", "ProxyEnum", "ProxiedEnum"):
-            self.enums.append((spec.pairs_with, entry))
+        if spec.keyword in tables.ENUM_FAMILIES.values():
+            self.enums.append((spec.pairs_with or "", entry))
         elif spec.keyword == "ProxyParamSizeAdder":
             self.size_adders.append(entry)
         elif entry.keyword not in self.device.parameters:
@@ -264,18 +265,17 @@ class _Builder:
         proxy = spec.keyword == "ProxyParam"
         v = self.fields(entry, spec, proxy=proxy)
         v += [None] * (len(tables.PARAM_FIELDS) - len(v))
-        parameter = Parameter(entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1], entry=entry)
-        parameter.link_path_size, parameter.link_path, parameter.descriptor = v[1], v[2], v[3]
-        parameter.data_type_code, parameter.data_size = v[4], v[5]
-        parameter.name, parameter.units, parameter.help = v[6], v[7], v[8]
-        parameter.data_type = self.data_type(entry, v[4])
-        for attribute, index in (("minimum", 9), ("maximum", 10), ("default", 11)):
-            setattr(parameter, attribute, self.param_value(entry, index, parameter, attribute, proxy))
-        parameter.scaling = Scaling(*v[12:21])
-        parameter.international_name, parameter.international_units, parameter.international_help = v[21:24]
+        parameter = Parameter(entry.keyword, spec.keyword, tables.instance_number(entry.keyword), entry=entry)
+        for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES):
+            if attribute and attribute not in _TYPED_BY_DATA_TYPE:
+                set_parameter_field(parameter, attribute, v[index])
+        parameter.data_type = self.data_type(entry, parameter.data_type_code)
+        for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES):
+            if attribute in _TYPED_BY_DATA_TYPE:
+                setattr(parameter, attribute, self.param_value(entry, index, parameter, attribute, proxy))
         return parameter
 
-    def data_type(self, entry: Entry, code) -> tables.DataType | None:
+    def data_type(self, entry: Entry, code: Any) -> tables.DataType | None:
         if not isinstance(code, int):
             return None  # empty, Module, or a structured type given as a path
         if code in tables.DATA_TYPES_BY_CODE:
@@ -296,25 +296,15 @@ class _Builder:
         value = entry.fields[index].value
         if proxy and isinstance(value, Scalar) and value.raw == MODULE:
             return MODULE
-        data_type = parameter.data_type
-        if data_type is None:
-            return plain(value)
-        rule_ = tables.min_max_rule(data_type.name)
-        if attribute != "default" and rule_.meaning == "length":
-            return self.value(entry, index, "UINT")
-        if data_type.kind in ("string", "epath"):
-            return self.value(entry, index, "EDS_Char_Array")
-        if data_type.kind == "stringi" or data_type.size is None:
-            return plain(value)
-        return self.value(entry, index, data_type.name)
+        type_name = parameter.value_type(attribute)
+        return plain(value) if type_name == "plain" else self.value(entry, index, type_name)
 
     def attach_enums_and_adders(self) -> None:
         parameters = self.device.parameters
         for family, entry in self.enums:
-            number = tables.split_numbered(entry.keyword)[1]
+            number = tables.instance_number(entry.keyword)
             parameter = parameters.get(f"{family}{number}")
-            type_name = parameter.data_type.name if parameter and parameter.data_type and \
-                parameter.data_type.kind in ("unsigned", "signed", "bits", "bool") else "LINT"
+            type_name = parameter.enum_key_type if parameter is not None else "LINT"
             enum: dict[int, str] = {}
             for index in range(0, len(entry.fields) - 1, 2):
                 key = self.value(entry, index, type_name)
@@ -324,7 +314,7 @@ class _Builder:
             if parameter is not None and parameter.enum is None:
                 parameter.enum = enum
         for entry in self.size_adders:
-            parameter = parameters.get(f"ProxyParam{tables.split_numbered(entry.keyword)[1]}")
+            parameter = parameters.get(f"ProxyParam{tables.instance_number(entry.keyword)}")
             if parameter is not None:
                 parameter.size_adder = tuple(self.param_value(entry, i, parameter, a, False)
                                              for i, a in enumerate(("minimum", "maximum", "default")))
@@ -337,7 +327,7 @@ class _Builder:
             if number is not None:
                 members.append(Reference(f"Param{number}", "Param", number, entry=entry, field_index=index))
         self.device.groups.append(ParameterGroup(
-            tables.split_numbered(entry.keyword)[1], self.value(entry, 0, "EDS_Char_Array"),
+            tables.instance_number(entry.keyword), self.value(entry, 0, "EDS_Char_Array"),
             self.value(entry, 1, "UINT"), members, entry))
 
     # --- [Assembly] ----------------------------------------------------------------------
@@ -349,7 +339,7 @@ class _Builder:
 
     def assembly(self, entry: Entry, spec: tables.EntrySpec) -> Assembly:
         proxy = spec.keyword == "ProxyAssem"
-        assembly = Assembly(entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1], entry=entry)
+        assembly = Assembly(entry.keyword, spec.keyword, tables.instance_number(entry.keyword), entry=entry)
         assembly.name = self.value(entry, 0, "EDS_Char_Array", proxy=proxy)
         assembly.path = self.value(entry, 1, "EPATH", proxy=proxy)
         assembly.size = self.value(entry, 2, "UINT", proxy=proxy)
@@ -361,6 +351,11 @@ class _Builder:
             if proxy and isinstance(first, Scalar) and first.raw == MODULE_MEMBER_LIST:
                 assembly.module_member_list = True
                 index += 1
+                continue
+            second = entry.fields[index + 1].value if index + 1 < len(entry.fields) else None
+            if proxy and isinstance(second, Scalar) and second.raw == MODULE_MEMBER_LIST:
+                assembly.module_member_list = True  # ",ModuleMemberList" (Figure C.15): the pair is the module's
+                index += 2
                 continue
             size = self.value(entry, index, "UINT")
             target = entry.fields[index + 1].value if index + 1 < len(entry.fields) else None
@@ -379,7 +374,7 @@ class _Builder:
         v = self.fields(entry, spec, proxy=spec.keyword == "ProxyConnect")
         v += [None] * (len(tables.CONNECTION_FIELDS) - len(v))
         self.device.connections[entry.keyword] = Connection(
-            entry.keyword, spec.keyword, tables.split_numbered(entry.keyword)[1],
+            entry.keyword, spec.keyword, tables.instance_number(entry.keyword),
             trigger_transport=v[0], parameters=v[1],
             o_to_t=ConnectionEndpoint(*v[2:5]), t_to_o=ConnectionEndpoint(*v[5:8]),
             config1=ConnectionEndpoint(None, *v[8:10]), config2=ConnectionEndpoint(None, *v[10:12]),
@@ -389,7 +384,7 @@ class _Builder:
     def port(self, entry: Entry, spec: tables.EntrySpec) -> None:
         v = self.fields(entry, spec)
         v += [None] * (4 - len(v))
-        self.device.ports.append(Port(tables.split_numbered(entry.keyword)[1], v[0], v[1], v[2], v[3],
+        self.device.ports.append(Port(tables.instance_number(entry.keyword), v[0], v[1], v[2], v[3],
                                       tuple(v[6:]), entry))
 
     # --- [Modular] -----------------------------------------------------------------------
@@ -399,17 +394,14 @@ class _Builder:
         if keyword == "Rack":
             v = self.fields(entry, spec)
             v += [None] * (8 - len(v))
-            modular.racks.append(Rack(tables.split_numbered(entry.keyword)[1], *v[:5],
+            modular.racks.append(Rack(tables.instance_number(entry.keyword), v[0], v[1], v[2], v[3], v[4],
                                       tuple(s for s in v[8:] if s is not None), entry))
         elif keyword == "Query":
             v = self.fields(entry, spec)
             v += [None] * (4 - len(v))
             modular.query = Query(*v[:4])
         else:
-            attribute = {"DefineSlotsInRack": "define_slots_in_rack", "SlotDisplayRule": "slot_display_rule",
-                         "Width": "width", "ExternalID": "external_id", "GenericID": "generic_id",
-                         "ExternIDExactMatch": "extern_id_exact_match"}[keyword]
-            setattr(modular, attribute, self.single(entry, spec))
+            setattr(modular, SINGLE_ENTRY_ATTRIBUTES["Modular"][keyword], self.single(entry, spec))
 
 
 def iter_references(device: Device) -> Iterator[Reference]:

@@ -6,15 +6,25 @@ builds the same model. Every object keeps the syntax ``entry`` it came from
 stay reachable. Values are Python values: ``int``, ``float``, ``str``,
 ``datetime.date``/``time``, :class:`~edsconv.model.values.Revision`, paths as tuples
 of :class:`~edsconv.model.values.PathItem`, references as :class:`Reference`.
-A field whose value could not be converted is None (a diagnostic says why);
-a field that a Proxy entry defers to its Proxied entry holds :data:`MODULE`.
+A field whose value has no reading is None (a diagnostic says why); a field
+that a Proxy entry defers to its Proxied entry holds :data:`MODULE`.
+
+The values policy: a value that breaks a notation rule of C.4.1.3 keeps its
+place in the model when the text allows exactly one reading of it
+(``ProdCode = 06402;`` is 6402, ``MinRev = 02;`` is 2, ``06-6-2001`` is June 6):
+the diagnostic stands, and :attr:`Device.erroneous` marks the field. Where no
+reading exists the field is None: a number outside its type (a BOOL default
+255), a date that is no day of the calendar, a string rejected for an escape
+sequence Table C.4 does not define (C.4.1.3.3.5: "reject the entire string").
 """
 
 from __future__ import annotations
 
 import datetime
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple
+from types import MappingProxyType
+from typing import Any, NamedTuple, TypeGuard
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
@@ -44,6 +54,41 @@ class Reference:
 
     def __str__(self) -> str:
         return self.keyword
+
+    @property
+    def text(self) -> str:
+        """The reference as written: ``Param3``, ``Param10:0``."""
+        return self.keyword if self.bit is None else f"{self.keyword}:{self.bit}"
+
+    @classmethod
+    def parse(cls, text: str, entry: Entry | None = None, field_index: int = 0) -> Reference | None:
+        """The reference ``text`` writes (:data:`~edsconv.spec_tables.REFERENCE_RE`); None when it is none."""
+        match = tables.REFERENCE_RE.fullmatch(text)
+        if match is None:
+            return None
+        family, number, bit = match.groups()
+        return cls(f"{family}{number}", family, int(number), entry=entry, field_index=field_index,
+                   bit=int(bit) if bit is not None else None)
+
+
+#: The model attribute of each single-field entry of [File], [Device], [ParamClass] and
+#: [Modular] (on FileDescription, Identity, ParamClass and Modular), in the order the
+#: records declare them.
+SINGLE_ENTRY_ATTRIBUTES: Mapping[str, Mapping[str, str]] = MappingProxyType({
+    "File": MappingProxyType({
+        "DescText": "description", "CreateDate": "create_date", "CreateTime": "create_time", "ModDate": "mod_date",
+        "ModTime": "mod_time", "Revision": "revision", "HomeURL": "home_url"}),
+    "Device": MappingProxyType({
+        "VendCode": "vendor_code", "VendName": "vendor_name", "ProdType": "product_type",
+        "ProdTypeStr": "product_type_string", "ProdCode": "product_code", "MajRev": "major_revision",
+        "MinRev": "minor_revision", "ProdName": "product_name", "Catalog": "catalog", "Icon": "icon",
+        "ExcludeFromAdapterRackConnection": "exclude_from_adapter_rack_connection"}),
+    "ParamClass": MappingProxyType({"MaxInst": "max_instances", "Descriptor": "descriptor",
+                                    "CfgAssembly": "cfg_assembly"}),
+    "Modular": MappingProxyType({
+        "DefineSlotsInRack": "define_slots_in_rack", "SlotDisplayRule": "slot_display_rule", "Width": "width",
+        "ExternalID": "external_id", "GenericID": "generic_id", "ExternIDExactMatch": "extern_id_exact_match"}),
+})
 
 
 @dataclass(slots=True)
@@ -141,6 +186,29 @@ class Parameter:
     size_adder: tuple[Any, Any, Any] | None = None
     entry: Entry | None = field(default=None, compare=False, repr=False)
 
+    def value_type(self, attribute: str) -> str:
+        """The type its ``minimum``, ``maximum`` or ``default`` is written in (Table C.17):
+        a data type name, ``UINT`` for a string's length bounds, ``EDS_Char_Array`` for
+        strings and paths, or ``plain`` (kept as written) when the type has no fixed size."""
+        data_type = self.data_type
+        if data_type is None:
+            return "plain"
+        if attribute != "default" and tables.min_max_rule(data_type.name).meaning == "length":
+            return "UINT"
+        if data_type.kind in ("string", "epath"):
+            return "EDS_Char_Array"
+        if data_type.kind == "stringi" or data_type.size is None:
+            return "plain"
+        return data_type.name
+
+    @property
+    def enum_key_type(self) -> str:
+        """The type of its EnumN values: its own integer type, LINT when it has none."""
+        data_type = self.data_type
+        if data_type is not None and data_type.kind in ("unsigned", "signed", "bits", "bool"):
+            return data_type.name
+        return "LINT"
+
     def descriptor_flags(self) -> list[str]:
         """The names of the Table C.15 bits set in the descriptor."""
         return tables.flags_set(self.descriptor or 0, tables.PARAM_DESCRIPTOR_BITS)
@@ -157,6 +225,39 @@ class Parameter:
         return tables.scale(value, s.multiplier if s.multiplier is not None else 1,
                             s.divisor if s.divisor is not None else 1, s.base if s.base is not None else 1,
                             s.offset or 0, precision)
+
+
+#: The Parameter attribute each ParamN field lands in (Table C.13), in field order. Field 1 is
+#: reserved (always 0) and kept nowhere: ""; ``scaling.x`` is attribute x of its Scaling.
+PARAMETER_FIELD_ATTRIBUTES: tuple[str, ...] = (
+    "", "link_path_size", "link_path", "descriptor", "data_type_code", "data_size", "name", "units", "help",
+    "minimum", "maximum", "default",
+    "scaling.multiplier", "scaling.divisor", "scaling.base", "scaling.offset", "scaling.multiplier_link",
+    "scaling.divisor_link", "scaling.base_link", "scaling.offset_link", "scaling.decimal_precision",
+    "international_name", "international_units", "international_help",
+)
+
+
+def parameter_field(parameter: Parameter, attribute: str) -> Any:
+    """The value of a :data:`PARAMETER_FIELD_ATTRIBUTES` attribute of ``parameter``."""
+    record, _, name = attribute.rpartition(".")
+    return getattr(parameter.scaling if record else parameter, name)
+
+
+def parameter_field_type(attribute: str) -> str:
+    """The type the ParamN field of ``attribute`` is written in: its FieldSpec's (Table C.13), the
+    data type code as a ``code``; "" for minimum, maximum and default, which have the parameter's
+    own (:meth:`Parameter.value_type`)."""
+    if attribute in ("minimum", "maximum", "default"):
+        return ""
+    if attribute == "data_type_code":
+        return "code"
+    return tables.PARAM_FIELDS[PARAMETER_FIELD_ATTRIBUTES.index(attribute)].alternatives[0]
+
+
+def set_parameter_field(parameter: Parameter, attribute: str, value: Any) -> None:
+    record, _, name = attribute.rpartition(".")
+    setattr(parameter.scaling if record else parameter, name, value)
 
 
 @dataclass(slots=True)
@@ -364,6 +465,9 @@ class Device:
     extra_entries: dict[str, list[GenericEntry]] = field(default_factory=dict)
     #: sections the 2003 text does not define, in file order
     other_sections: list[GenericSection] = field(default_factory=list)
+    #: fields whose value breaks a notation rule (an error) but has one reading, which the model
+    #: holds: (section, entry keyword, 0-based field index) -> the code of the rule it breaks
+    erroneous: dict[tuple[str, str, int], str] = field(default_factory=dict, compare=False, repr=False)
     #: comments of the EDS; not part of the device's meaning (excluded from equality)
     comments: list[CommentNote] = field(default_factory=list, compare=False, repr=False)
     #: the syntax model it was built from (None when built from XML)
@@ -383,6 +487,59 @@ class Device:
         """The entry a reference keyword names, in any section (newer-spec entries
         such as AssemExaN resolve to their generic entry)."""
         found = self.parameters.get(keyword) or self.assemblies.get(keyword) or self.connections.get(keyword)
-        if found is None:
-            found = next((e for entries in self.extra_entries.values() for e in entries if e.keyword == keyword), None)
-        return found
+        if found is not None:
+            return found
+        return next((e for entries in self.extra_entries.values() for e in entries if e.keyword == keyword), None)
+
+    # --- sizes of assembly members (C.4.1.4.8) ---------------------------------------------
+    def member_bits(self, assembly: Assembly, member: AssemblyMember) -> int | None:
+        """A member's size in bits: its Member Size; when that is empty, the defined size of
+        what it references (C.4.1.4.8): a Param's Data Size (field 6) or an Assem's size
+        (:meth:`assembly_bits`), in bytes times 8. None when unknown: a Member Size written
+        but not readable, a parameter without a Data Size, any other reference, a cycle."""
+        return self._member_bits(assembly, member, frozenset({assembly.keyword}))
+
+    def assembly_bits(self, assembly: Assembly) -> int | None:
+        """The size of an assembly's data block in bits. C.4.1.4.8: its Size and its members
+        both specify it (and shall agree); the Size when given, else what the members add
+        up to, 0 with neither. None when unknown (members from the module, a size or member
+        that cannot be read, a ProxyAssem / ProxiedAssem that states neither)."""
+        return self._assembly_bits(assembly, frozenset({assembly.keyword}))
+
+    def _member_bits(self, assembly: Assembly, member: AssemblyMember, seen: frozenset[str]) -> int | None:
+        if is_integer(member.size):
+            return member.size
+        if field_written(assembly.entry, member.field_index) or not isinstance(member.reference, Reference):
+            return None
+        reference = member.reference
+        target = reference.target if reference.target is not None else self.resolve(reference.keyword)
+        if isinstance(target, Parameter):
+            return 8 * target.data_size if is_integer(target.data_size) else None
+        if isinstance(target, Assembly) and target.keyword not in seen:
+            return self._assembly_bits(target, seen | {target.keyword})
+        return None
+
+    def _assembly_bits(self, assembly: Assembly, seen: frozenset[str]) -> int | None:
+        if is_integer(assembly.size):
+            return 8 * assembly.size
+        if field_written(assembly.entry, 2) or assembly.module_member_list:
+            return None
+        if not assembly.members and assembly.family != "Assem":
+            return None  # a Proxy/Proxied assembly stating neither is described with the module (C.4.1.5.3.2)
+        total = 0
+        for member in assembly.members:
+            bits = self._member_bits(assembly, member, seen)
+            if bits is None:
+                return None
+            total += bits
+        return total
+
+
+def is_integer(value: object) -> TypeGuard[int]:
+    """An int that is not a bool (a model value read as a number, not a Yes/No)."""
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def field_written(entry: Entry | None, index: int) -> TypeGuard[Entry]:
+    """True when field ``index`` (0-based) of the entry holds a value, converted or not."""
+    return entry is not None and index < len(entry.fields) and entry.fields[index].value is not None

@@ -24,7 +24,8 @@ from edsconv.model import Device, Reference
 from edsconv.model.build import iter_references
 
 #: A parameter substitution inside a path string, bracketed or not (C.4.1.4.9.13).
-_PATH_REFERENCE = re.compile(r"(?<![A-Za-z0-9_])((?:Proxy)?Param)([1-9][0-9]*)(?![A-Za-z0-9_])")
+# a path reference standing alone: not part of a longer word
+_PATH_REFERENCE = re.compile(rf"(?<![A-Za-z0-9_]){tables.PATH_REFERENCE_RE.pattern}(?![A-Za-z0-9_])")
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,9 +76,9 @@ def occurrences(eds: EdsFile, device: Device, lines: Sequence[str]) -> list[Occu
     found = [_keyword_span(entry, keyword, "definition") for keyword, entry in definitions(device).items()]
     found += _paired_entries(eds)
     section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
-    found += [_reference_span(reference, section_of.get(id(reference.entry), ""))
+    found += [_reference_span(reference, entry, section_of.get(id(entry), ""))
               for reference in iter_references(device)
-              if reference.entry is not None and reference.field_index < len(reference.entry.fields)]
+              if (entry := reference.entry) is not None and reference.field_index < len(entry.fields)]
     found += _path_references(eds, lines)
     return found
 
@@ -111,8 +112,7 @@ _KIND_BY_SECTION = {"Groups": "group member", "Assembly": "assembly member", "Co
                     "Modular": "slot display rule"}
 
 
-def _reference_span(reference: Reference, section: str) -> Occurrence:
-    entry = reference.entry
+def _reference_span(reference: Reference, entry: Entry, section: str) -> Occurrence:
     item = entry.fields[reference.field_index]
     raw = item.raw or ""
     by_number = not raw.startswith(reference.family)
@@ -126,17 +126,20 @@ def _path_references(eds: EdsFile, lines: Sequence[str]) -> Iterator[Occurrence]
     """``[ParamN]`` and ``ParamN`` inside the path strings of every entry whose field is an EPATH."""
     for section in eds.sections:
         for entry in section.entries:
-            strings = [(i, item) for i, item in enumerate(entry.fields)
+            strings = [(i, item, item.value) for i, item in enumerate(entry.fields)
                        if isinstance(item.value, String) and "Param" in item.value.raw]
             spec = tables.entry_spec(section.name, entry.keyword) if strings else None
-            for index, item in strings if spec is not None else ():
+            if spec is None:
+                continue
+            for index, item, value in strings:
                 field_spec = spec.field_at(index + 1)
-                if field_spec is None or "EPATH" not in field_spec.alternatives:
+                if field_spec is None or "EPATH" not in field_spec.alternatives or not isinstance(value, String):
                     continue
-                for line, column, part in _string_parts(item.value, item.line, item.column, lines):
+                for line, column, part in _string_parts(value, item.line, item.column, lines):
                     for match in _PATH_REFERENCE.finditer(part):
-                        yield Occurrence(match.group(1) + match.group(2), line, column + match.start(),
-                                         column + match.end(), match.group(1), "path", entry.keyword)
+                        family = tables.split_numbered(match.group())[0]
+                        yield Occurrence(match.group(), line, column + match.start(),
+                                         column + match.end(), family, "path", entry.keyword)
 
 
 def _string_parts(value: String, line: int, column: int, lines: Sequence[str]) -> Iterator[tuple[int, int, str]]:

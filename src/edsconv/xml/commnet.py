@@ -19,9 +19,7 @@ network profile"):
   (keyword number beyond the id pattern, a port type name that is no keyword, a repeated PortN);
 - ``edsconv:EntryOrder``: the order of the [Connection Manager] entries when it is not the
   schema's Connection*, ProxyConnect*, ProxiedConnect*;
-- ``edsconv:Field`` / ``edsconv:Empty`` / ``edsconv:Group`` in PortSpecific: Port fields 7...;
-- ``edsconv:RequiredMinimum``: the container holds the minimum edsconv fills for an EtherNet/IP
-  device (the EDS says nothing about it), not values read from the EDS.
+- ``edsconv:Field`` / ``edsconv:Empty`` / ``edsconv:Group`` in PortSpecific: Port fields 7....
 """
 
 from __future__ import annotations
@@ -35,6 +33,7 @@ from lxml import etree
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
+from edsconv.eds.reader_rules import DUPLICATE_ENTRY
 from edsconv.model import MODULE, Connection, Device, Port, Reference
 from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, PathItem, ValueProblem, path_items
 from edsconv.xml.common import (
@@ -46,18 +45,16 @@ from edsconv.xml.common import (
     is_xml_text,
     xml_text,
 )
+from edsconv.xml.datamodel import collapse, string_value, token
+from edsconv.xml.safe import XmlDocument
 
 #: Connection families in the order the schema's ConnectionDescriptions sequence wants them.
 FAMILIES = ("Connection", "ProxyConnect", "ProxiedConnect")
 
-_N = "[1-9][0-9]{0,4}"
-# The lexical spaces of CIPDataTypes.xsd / ENet_CommNet_Profile.xsd the writer must meet.
-_PARAM_REFERENCE = re.compile(f"(?:Proxy)?Param{_N}(?::[0-9]{{1,2}})*")  # et_ParamReference
-_ASSEM_REFERENCE = re.compile(f"(?:Proxy)?Assem{_N}")  # et_AssemReference
-_PORT_TYPE = re.compile(f"ControlNet|ControlNet_Redundant|TCP|DeviceNet|{_N}_[A-Za-z0-9][A-Za-z0-9_]*")
+_N = tables.INSTANCE_NUMBER
+# The lexical spaces of ENet_CommNet_Profile.xsd the writer must meet.
+_PORT_TYPE = re.compile("|".join((*tables.PORT_TYPE_KEYWORDS, tables.XSD_VENDOR_KEYWORD)))
 _ENTRY_ID = {family: re.compile(f"{family}{_N}") for family in (*FAMILIES, "Port")}
-# What a reader accepts: every reference the model knows (AssemExaN from newer files too).
-_ANY_REFERENCE = re.compile(r"(ProxyParam|ProxyAssem|Param|AssemExa|Assem)([1-9][0-9]*)(?::([0-9]+))?")
 _ANY_KEYWORD = re.compile(r"(Connection|ProxyConnect|ProxiedConnect|Port)([1-9][0-9]*)")
 _ESCAPE = re.compile(r"\\(\\|u[0-9A-Fa-f]{4})")
 
@@ -129,10 +126,6 @@ def _text_extension(tag: str, text: str, **attributes: str) -> etree._Element:
     return _ext(tag, _escape(text), escaped="true", **attributes)
 
 
-def _reference_text(reference: Reference) -> str:
-    return reference.keyword + (f":{reference.bit}" if reference.bit is not None else "")
-
-
 def _path_text(path: Iterable[PathItem]) -> str:
     return " ".join(str(item) for item in path)
 
@@ -148,8 +141,10 @@ def _schema_text(field: _Field, value: Any) -> str | None:
             return str(value)
         return None
     if isinstance(value, Reference) and field.kind in ("rpi", "size", "format"):
-        text = _reference_text(value)
-        forms = (_PARAM_REFERENCE, _ASSEM_REFERENCE) if field.kind == "format" else (_PARAM_REFERENCE,)
+        text = value.text
+        forms: tuple[re.Pattern[str], ...] = (tables.XSD_PARAM_REFERENCE_RE,)
+        if field.kind == "format":
+            forms += (tables.XSD_ASSEM_REFERENCE_RE,)
         return text if any(form.fullmatch(text) for form in forms) else None
     return None
 
@@ -157,7 +152,7 @@ def _schema_text(field: _Field, value: Any) -> str | None:
 def _value_extension(field: _Field, value: Any) -> etree._Element:
     """edsconv:Value holding a value the field's element cannot."""
     if isinstance(value, Reference):
-        return _ext("Value", _reference_text(value), field=field.tag)
+        return _ext("Value", value.text, field=field.tag)
     if isinstance(value, tuple):
         return _ext("Value", _path_text(value), field=field.tag)
     if isinstance(value, str):
@@ -194,10 +189,10 @@ def _field_content(field: _Field, value: Any, names: set[str], keyword: str) -> 
         if isinstance(value, tuple):
             return _path_text(value), []
         return empty, [_value_extension(field, value)]
-    text = _schema_text(field, value)
-    if text is None:
+    schema_text = _schema_text(field, value)
+    if schema_text is None:
         return empty, [_value_extension(field, value)]
-    return text, []
+    return schema_text, []
 
 
 def _connection_element(connection: Connection, tag: str, names: set[str]) -> etree._Element:
@@ -256,21 +251,24 @@ def _port_fits(port: Port, ids: set[str]) -> bool:
 
 
 def _port_element(port: Port, tag: str, **attributes: str) -> etree._Element:
-    element = etree.Element(tag, id=f"Port{port.number}", **attributes)
+    """A Port, or an edsconv:Port whose children are in the edsconv namespace too: an element without
+    namespace inside an extension would be validated against the schema's global declarations."""
+    namespace = tag[:tag.index("}") + 1] if tag.startswith("{") else ""
+    element = etree.Element(tag, {"id": f"Port{port.number}", **attributes})
     extensions = []
     if port.type_name is not None:
-        etree.SubElement(element, "PortTypeName").text = xml_text(port.type_name)
+        etree.SubElement(element, namespace + "PortTypeName").text = xml_text(port.type_name)
         if not is_xml_text(port.type_name):
             extensions.append(_text_extension("Value", port.type_name, field="PortTypeName"))
     if port.name is not None:
-        etree.SubElement(element, "PortName").text = xml_text(port.name)
+        etree.SubElement(element, namespace + "PortName").text = xml_text(port.name)
         if not is_xml_text(port.name):
             extensions.append(_text_extension("Value", port.name, field="PortName"))
     if port.object_path is not None:
-        etree.SubElement(element, "PortObject").text = _path_text(port.object_path)
+        etree.SubElement(element, namespace + "PortObject").text = _path_text(port.object_path)
     if port.port_number is not None:
-        etree.SubElement(element, "PortNumber").text = str(port.port_number)
-    specific = etree.SubElement(element, "PortSpecific")
+        etree.SubElement(element, namespace + "PortNumber").text = str(port.port_number)
+    specific = etree.SubElement(element, namespace + "PortSpecific")
     specific.extend(_specific_elements(port.specific))
     element.extend(extensions)
     return element
@@ -290,101 +288,26 @@ def _ports(device: Device) -> list[etree._Element]:
     return ([ports] if len(ports) else []) + others
 
 
-# The minimum edsconv declares for an EtherNet/IP device, whose EDS says nothing
-# about these objects: what the schema fixes (attributes fixed Get/Set, services
-# fixed true), the services that make mandatory attributes readable, and
-# None/false for everything optional ("not declared", not "known absent").
-_GET, _SET, _NONE = "Get", "Set", "None"
-_REQUIRED_MINIMUM = {
-    "ConnectionManager_InstanceOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
-        ("Get_Attribute_List", "false"), ("Set_Attribute_List", "false"), ("Get_Attribute_Single", "false"),
-        ("Set_Attribute_Single", "false"), ("Forward_Close", "true"), ("Unconnected_Send", "false"),
-        ("Forward_Open", "true"), ("Get_Connection_Data", "false"), ("Search_Connection_Data", "false"),
-        ("Ex_Forward_Open", "false"), ("Get_Object_Owner", "false")),
-    "EtherNetIPLinkObject_InstanceAttributes": (
-        "Access_Rule", ("InterfaceSpeed", _GET), ("InterfaceFlags", _GET), ("PhysicalAddress", _GET),
-        ("InterfaceCounters", _NONE), ("MediaCounters", _NONE)),
-    "EtherNetIPLinkObject_InstanceOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true"),
-        ("Get_and_Clear", "false")),
-    "TCPIPInterfaceObject_InstanceAttributes": (
-        "Access_Rule", ("Status", _GET), ("ConfigurationCapability", _GET), ("ConfigurationControl", _SET),
-        ("PhysicalLinkObject", _GET), ("InterfaceConfiguration", _SET), ("HostName", _SET)),
-    "TCPIPInterfaceObject_InstanceOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Set_Attribute_All", "false"),
-        ("Get_Attribute_Single", "true"), ("Set_Attribute_Single", "true")),
-    "EncapsulationProtocol_Operations": (
-        "SupportedService", ("NOP", "true"), ("ListServices", "true"), ("ListIdentity", "true"),
-        ("ListInterfaces", "false"), ("RegisterSession", "true"), ("UnRegisterSession", "true"),
-        ("SendRRData", "true"), ("SendUnitData", "true"), ("IndicateStatus", "false"), ("Cancel", "false")),
-    "EtherNetIPLinkObject_ClassAttributes": ("Access_Rule", ("ObjectRevision", _GET), ("MaxInstance", _GET)),
-    "EtherNetIPLinkObject_ClassOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true")),
-    "TCPIPInterfaceObject_ClassAttributes": ("Access_Rule", ("ObjectRevision", _GET), ("MaxInstance", _GET)),
-    "TCPIPInterfaceObject_ClassOperations": (
-        "SupportedService", ("Get_Attribute_All", "false"), ("Get_Attribute_Single", "true")),
-}
-
-
-def _minimum(parent: etree._Element, tag: str) -> etree._Element:
-    """Container ``tag`` under ``parent`` with its required-minimum children and the marker."""
-    container = etree.SubElement(parent, tag)
-    if tag == "EncapsulationProtocol_Attributes":
-        etree.SubElement(container, "ProtocolVersion").text = "1"
-    else:
-        attribute, *children = _REQUIRED_MINIMUM[tag]
-        for child, value in children:
-            etree.SubElement(container, child, {attribute: value})
-    container.append(_ext("RequiredMinimum"))
-    return container
-
-
-def _object(parent: etree._Element, tag: str, *containers: str) -> None:
-    element = etree.SubElement(parent, tag)
-    for container in containers:
-        _minimum(element, container)
-
-
-def is_ethernetip_device(device: Device) -> bool:
-    """An EtherNet/IP device: a ClassN EtherNetIP (C.4.2.2.1) or a TCP port (C.4.2.2.2)."""
-    return device.is_ethernetip or any(p.type_name == tables.ETHERNETIP_PORT_TYPE for p in device.ports)
-
-
 def commnet_profile(device: Device, header: Header) -> etree._Element:
     """The ISO15745Profile root of the EtherNet/IP network profile of ``device``.
 
-    Connections and ports come from the EDS; for an EtherNet/IP device the
-    Connection Manager services, the Ethernet Link, TCP/IP Interface and
-    encapsulation objects get the required minimum (marked edsconv:RequiredMinimum).
+    It states only what the EDS states: its connections and ports. The schema requires
+    ConnectionManager, MessageRouter and TransportLayers, none of their children; the
+    objects whose services and attributes an EDS does not describe (Connection Manager
+    and Message Router operations, the EtherNet/IP Link, TCP/IP Interface and
+    encapsulation objects, NetworkManagement) are left out, since every SupportedService
+    or Access_Rule written there would claim what the EDS does not say.
     """
     root = etree.Element("ISO15745Profile", nsmap=NSMAP)
     root.append(header_element(header, "CommunicationNetwork", "EtherNet/IP", "COMM", "CSI"))
     body = etree.SubElement(root, "ProfileBody", file_description_attributes(device, header))
-    ethernetip = is_ethernetip_device(device)
     application = etree.SubElement(body, "ApplicationLayers")
     manager = etree.SubElement(application, "ConnectionManager")
-    if ethernetip:
-        _minimum(manager, "ConnectionManager_InstanceOperations")
     descriptions = _connection_descriptions(device)
     if descriptions is not None:
         manager.append(descriptions)
     etree.SubElement(application, "MessageRouter")
-    transport = etree.SubElement(body, "TransportLayers")
-    if ethernetip:
-        _object(transport, "EtherNetIPLinkObject", "EtherNetIPLinkObject_InstanceAttributes",
-                "EtherNetIPLinkObject_InstanceOperations")
-        _object(transport, "TCPIPInterfaceObject", "TCPIPInterfaceObject_InstanceAttributes",
-                "TCPIPInterfaceObject_InstanceOperations")
-        _object(transport, "EncapsulationProtocol", "EncapsulationProtocol_Attributes",
-                "EncapsulationProtocol_Operations")
-    transport.extend(_ports(device))
-    if ethernetip:
-        management = etree.SubElement(body, "NetworkManagement")
-        _object(management, "NM-EtherNetIPLinkObject", "EtherNetIPLinkObject_ClassAttributes",
-                "EtherNetIPLinkObject_ClassOperations")
-        _object(management, "NM-TCPIPInterfaceObject", "TCPIPInterfaceObject_ClassAttributes",
-                "TCPIPInterfaceObject_ClassOperations")
+    etree.SubElement(body, "TransportLayers").extend(_ports(device))
     etree.cleanup_namespaces(root, top_nsmap=NSMAP)
     return root
 
@@ -392,26 +315,25 @@ def commnet_profile(device: Device, header: Header) -> etree._Element:
 # --- reading -------------------------------------------------------------------------------
 
 class _Reader:
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: Device, document: XmlDocument) -> None:
         self.device = device
+        self.document = document
         self.diagnostics: list[Diagnostic] = []
 
     def report(self, problem: ValueProblem, element: etree._Element) -> None:
-        line = element.sourceline or 0
-        self.diagnostics.append(Diagnostic.of(problem.rule, f"{_describe(element)}: {problem.message}",
-                                              line, 1 if line else 0))
+        self.diagnostics.append(self.document.diagnostic(problem.rule, f"{_describe(element)}: {problem.message}",
+                                                         element))
 
     # values
     @staticmethod
     def reference(text: str) -> Reference:
-        match = _ANY_REFERENCE.fullmatch(text)
-        if match is None:
+        found = Reference.parse(text)
+        if found is None:
             raise ValueProblem(WRONG_KIND, f"{text!r} is neither a number nor a ParamN / AssemN reference")
-        family, number, bit = match.groups()
-        return Reference(f"{family}{number}", family, int(number), bit=int(bit) if bit is not None else None)
+        return found
 
     def number_or_reference(self, text: str) -> int | Reference:
-        text = text.strip()
+        text = collapse(text)
         return int(text) if text.isascii() and text.isdigit() else self.reference(text)
 
     @staticmethod
@@ -419,20 +341,20 @@ class _Reader:
         return path_items(text)
 
     def field_value(self, field: _Field, element: etree._Element) -> Any:
-        text = "".join(element.itertext())
+        text = string_value(element)
         if field.kind == "text":
             return text
         if field.kind == "path":
             return self.path(text)
         if field.kind == "dword":
-            text = "".join(text.split())
+            text = collapse(text)
             if not re.fullmatch(r"(?:[0-9A-Fa-f]{2}){0,4}", text):
                 raise ValueProblem(WRONG_KIND, f"{text!r} is not a DWORD in hexBinary (at most 8 hexadecimal digits)")
             return int(text, 16) if text else None
         return self.number_or_reference(text)
 
     def extension_value(self, field: _Field | None, element: etree._Element) -> Any:
-        text = "".join(element.itertext())
+        text = string_value(element)
         if element.get("escaped") == "true":
             text = _unescape(text)
         if field is None or field.kind == "text" or element.get("type") == "string":
@@ -444,17 +366,16 @@ class _Reader:
     # connections
     def connection(self, element: etree._Element, family: str, keyword: str, number: int) -> Connection:
         connection = Connection(keyword, family, number)
-        for child in element:
-            if not isinstance(child.tag, str):
-                continue
+        for child in element.iterchildren(etree.Element):
             try:
                 if child.tag in _FIELDS_BY_TAG:
                     field = _FIELDS_BY_TAG[child.tag]
                     field.set(connection, self.field_value(field, child))
                 elif child.tag in (EDSCONV + "Module", EDSCONV + "Empty", EDSCONV + "Value"):
-                    field = _FIELDS_BY_TAG.get(child.get("field", ""))
-                    if field is None:
+                    named = _FIELDS_BY_TAG.get(child.get("field", ""))
+                    if named is None:
                         raise ValueProblem(WRONG_KIND, f"field {child.get('field')!r} is not a connection field")
+                    field = named
                     marker = etree.QName(child).localname
                     value = MODULE if marker == "Module" else None if marker == "Empty" else \
                         self.extension_value(field, child)
@@ -468,19 +389,22 @@ class _Reader:
         order: list[str] = []
         for child in descriptions:
             if child.tag == EDSCONV + "EntryOrder":
-                order = (child.text or "").split()
+                order = string_value(child).split()
                 continue
             if child.tag not in (*FAMILIES, EDSCONV + "Connection"):
                 continue
-            keyword = child.get("id", "")
+            keyword = collapse(child.get("id", ""))
             match = _ANY_KEYWORD.fullmatch(keyword)
-            family = match[1] if match else ""
-            if family not in FAMILIES or (child.tag in FAMILIES and child.tag != family):
+            if match is None or match[1] not in FAMILIES or (child.tag in FAMILIES and child.tag != match[1]):
                 self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a {etree.QName(child).localname}N "
                                          "keyword"), child)
                 continue
-            if keyword not in found:
-                found[keyword] = self.connection(child, family, keyword, int(match[2]))
+            if keyword in found:  # ids are unique among the schema's elements; an edsconv:Connection may repeat one
+                self.diagnostics.append(self.document.diagnostic(
+                    DUPLICATE_ENTRY, f"{_describe(child)}: id {keyword!r} repeats an earlier connection; the first "
+                    "is kept", child))
+                continue
+            found[keyword] = self.connection(child, match[1], keyword, int(match[2]))
         for keyword in [k for k in order if k in found] + [k for k in found if k not in order]:
             self.device.connections[keyword] = found[keyword]
 
@@ -497,23 +421,24 @@ class _Reader:
         return values
 
     def port(self, element: etree._Element) -> Port | None:
-        keyword = element.get("id", "")
+        keyword = collapse(element.get("id", ""))
         match = _ANY_KEYWORD.fullmatch(keyword)
         if not match or match[1] != "Port":
             self.report(ValueProblem(WRONG_KIND, f"id {keyword!r} is not a PortN keyword"), element)
             return None
         port = Port(int(match[2]))
-        for child in element:
-            tag = child.tag
+        for child in element.iterchildren(etree.Element):
+            # an edsconv:Port's children are in its namespace, a Port's in none
+            tag = etree.QName(child).localname if child.tag != EDSCONV + "Value" else child.tag
             try:
                 if tag == "PortTypeName":
-                    port.type_name = (child.text or "").strip()
+                    port.type_name = token(child)
                 elif tag == "PortName":
-                    port.name = child.text or ""
+                    port.name = string_value(child)
                 elif tag == "PortObject":
-                    port.object_path = self.path(child.text or "")
+                    port.object_path = self.path(token(child))
                 elif tag == "PortNumber":
-                    text = (child.text or "").strip()
+                    text = token(child)
                     if not (text.isascii() and text.isdigit()) or int(text) > _UINT_MAX:
                         raise ValueProblem(OUT_OF_RANGE, f"{text!r} is not a UINT port number")
                     port.port_number = int(text)
@@ -541,8 +466,8 @@ class _Reader:
                 placed.append((int(position), port))
             else:
                 ports.append(port)
-        for position, port in sorted(placed, key=lambda item: item[0]):
-            ports.insert(position, port)
+        for index, port in sorted(placed, key=lambda item: item[0]):
+            ports.insert(index, port)
         self.device.ports.extend(ports)
 
 
@@ -553,12 +478,15 @@ def _describe(element: etree._Element) -> str:
     return f"{owner} {name}" if owner else name
 
 
-def read_commnet_profile(root: etree._Element, device: Device) -> list[Diagnostic]:
-    """Fill ``device.connections`` and ``device.ports`` from a network profile (the inverse of
-    :func:`commnet_profile`, extension elements included); the diagnostics name values
-    that could not be read. The required-minimum objects carry nothing the model keeps."""
-    reader = _Reader(device)
-    body = root.find("ProfileBody")
+def read_commnet_profile(source: XmlDocument | etree._ElementTree | etree._Element,
+                         device: Device) -> list[Diagnostic]:
+    """Fill ``device.connections`` and ``device.ports`` from a network profile (the document,
+    its root or tree; the inverse of :func:`commnet_profile`, extension elements included);
+    the diagnostics name values that could not be read, at their element. The objects'
+    operations and attributes (SupportedService, Access_Rule) have no place in the model."""
+    document = XmlDocument.of(source)
+    reader = _Reader(device, document)
+    body = document.tree.getroot().find("ProfileBody")
     if body is None:
         return reader.diagnostics
     descriptions = body.find("ApplicationLayers/ConnectionManager/ConnectionDescriptions")

@@ -16,16 +16,11 @@ from pathlib import Path
 
 from lxml import etree
 
+from edsconv.diagnostics import Diagnostic, Rule
+
 #: Larger inputs are refused before parsing. The biggest real profiles are a few MiB.
 MAX_XML_BYTES = 64 * 1024 * 1024
 
-_PARSER_OPTIONS = {
-    "resolve_entities": False,
-    "no_network": True,
-    "load_dtd": False,
-    "dtd_validation": False,
-    "huge_tree": False,
-}
 
 # An entity declaration can only stand in a DOCTYPE's internal subset; looking
 # for one in the raw bytes, in each encoding XML allows without a declaration,
@@ -64,6 +59,20 @@ class XmlDocument:
     tree: etree._ElementTree
     #: The decoded source lines, for the positions libxml2 does not record.
     lines: list[str]
+    #: The file it was read from (None for bytes or a tree built in memory).
+    path: str | None = None
+
+    @classmethod
+    def of(cls, source: XmlDocument | etree._ElementTree | etree._Element) -> XmlDocument:
+        """``source`` as a document; a tree or element without its text gives the lines libxml2
+        records and column 1."""
+        if isinstance(source, XmlDocument):
+            return source
+        return cls(source if isinstance(source, etree._ElementTree) else source.getroottree(), [])
+
+    def diagnostic(self, rule: Rule, message: str, element: etree._Element) -> Diagnostic:
+        """A diagnostic of ``rule`` at ``element``'s start tag in this document's file."""
+        return Diagnostic.of(rule, message, *self.position(element), self.path)
 
     def position(self, element: etree._Element) -> tuple[int, int]:
         """Line and column of ``element``'s start tag.
@@ -71,7 +80,7 @@ class XmlDocument:
         libxml2 records the line where the start tag *ends* and no column, so
         the tag's ``<`` is looked for on that line and the few before it.
         """
-        line = element.sourceline or 0
+        line = source_line(element)
         if not line:
             return 0, 0
         qname = etree.QName(element)
@@ -83,19 +92,28 @@ class XmlDocument:
         return line, 1
 
 
+def source_line(element: etree._Element) -> int:
+    """The line libxml2 recorded for ``element``, 0 when none (lxml-stubs 0.5 leave ``sourceline`` untyped)."""
+    line: object = element.sourceline
+    return line if isinstance(line, int) else 0
+
+
 def read_xml(path: str | Path, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
     """Read and parse the file at ``path``; ``OSError`` propagates for missing files."""
     with open(path, "rb") as stream:
         data = stream.read(max_bytes + 1)
-    return parse_xml(data, max_bytes)
+    return parse_xml(data, max_bytes, str(path))
 
 
-def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
-    """Parse ``data`` safely, raising an :class:`XmlError` subclass for anything unusable."""
+def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES, path: str | None = None) -> XmlDocument:
+    """Parse ``data`` (read from ``path``, if any) safely, raising an :class:`XmlError` subclass
+    for anything unusable."""
     if len(data) > max_bytes:
-        raise XmlTooLargeError(f"input larger than {max_bytes} bytes refused")
+        # not read, so no position within it: the file as a whole, from its start
+        raise XmlTooLargeError(f"input larger than {max_bytes} bytes refused", 1, 1)
     _refuse_entity_declarations(data)
-    parser = etree.XMLParser(**_PARSER_OPTIONS)
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False,
+                             huge_tree=False)
     try:
         root = etree.fromstring(data, parser)
     except etree.XMLSyntaxError as error:
@@ -105,10 +123,11 @@ def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES) -> XmlDocument:
         raise XmlSyntaxError(f"not well-formed: {message}", line, column) from None
     tree = root.getroottree()
     dtd = tree.docinfo.internalDTD
-    if dtd is not None and any(True for _ in dtd.iterentities()):
+    # lxml-stubs 0.5 do not declare DTD.iterentities
+    if dtd is not None and any(True for _ in dtd.iterentities()):  # type: ignore[union-attr]
         # Reached only by encodings the byte scan does not cover.
         raise UnsafeXmlError(_ENTITY_MESSAGE, 1, 1)
-    return XmlDocument(tree, data.decode(tree.docinfo.encoding or "utf-8", errors="replace").splitlines())
+    return XmlDocument(tree, data.decode(tree.docinfo.encoding or "utf-8", errors="replace").splitlines(), path)
 
 
 def _refuse_entity_declarations(data: bytes) -> None:

@@ -4,9 +4,16 @@ Each profile kind maps to one of the schemas restored in ``schemas/`` (see
 ``schemas/ERRATA.md``). Two of them need XSD 1.1: their trailing ``##any``
 wildcards after optional elements violate Unique Particle Attribution in XSD 1.0.
 
-Building a schema object costs 0.05-0.3 s, so built schemas are also pickled to
-a per-user disk cache (see :func:`cache_dir`) and later processes unpickle them
-(~0.04 s). The cache key hashes every ``.xsd`` file, the schemas directory, the
+Documents edsconv writes are validated with lxml (libxml2, XSD 1.0 only), against
+the schema itself or, for the two 1.1 schemas, against its XSD 1.0 rendition in
+``schemas/xsd10/`` (derived by ``schemas/derive_xsd10.py``, never more permissive
+than the 1.1 schema; see ``schemas/xsd10/README.md``): 50-100 times faster than
+xmlschema. The restored schemas loaded by xmlschema stay the reference for
+``edsconv validate`` and for the messages of a rejected document.
+
+Building an xmlschema schema object costs 0.05-0.3 s, so built schemas are also pickled to
+a per-user disk cache (:mod:`edsconv.cache`) and later processes unpickle them
+(~0.04 s). The cache key hashes every ``.xsd`` file (the as-printed variants too), the schemas directory, the
 xmlschema version and the Python version; any trouble with the cache falls back
 to building the schema.
 """
@@ -15,18 +22,19 @@ from __future__ import annotations
 
 import functools
 import hashlib
-import os
 import pickle
 import sys
-import tempfile
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from edsconv import cache
+from edsconv.cache import cache_dir
 from edsconv.resources import data_dir
 
 if TYPE_CHECKING:
     import xmlschema
+    from lxml import etree
 
 
 @dataclass(frozen=True, slots=True)
@@ -51,7 +59,11 @@ PROFILE_KINDS: tuple[ProfileKind, ...] = (
     ProfileKind("adsnet-commnet", "CommunicationNetwork", "ADS-net_CommNet_Profile.xsd", "A.3.3"),
     ProfileKind("flnet-device", "Device", "FL-net_Device_Profile.xsd", "B.1.5"),
     ProfileKind("flnet-commnet", "CommunicationNetwork", "FL-net_CommNet_Profile.xsd", "B.2.4.5"),
-    ProfileKind("powerlink-xdd", "", None, "ISO 15745-1 container"),
+    # ISO 15745 families recognised but not validated (edsconv holds no schema): xml/validate.py FAMILIES
+    ProfileKind("powerlink-xdd", "", None, "EPSG DS 311"),
+    ProfileKind("canopen-xdd", "", None, "CiA 311"),
+    ProfileKind("profinet-gsdml", "Device", None, "GSDML"),
+    ProfileKind("iolink-iodd", "Device", None, "IODD"),
 )
 
 _BY_NAME = {kind.name: kind for kind in PROFILE_KINDS}
@@ -61,6 +73,34 @@ _BY_XSD = {kind.xsd: kind for kind in PROFILE_KINDS if kind.xsd}
 def kind_named(name: str) -> ProfileKind:
     """Look a kind up by identifier or by schema file name (``KeyError`` if neither)."""
     return _BY_NAME.get(name) or _BY_XSD[name]
+
+
+#: Directory (in ``schemas/``) of the as-printed variants (``schemas/derive_as_printed.py``).
+AS_PRINTED = "as_printed"
+
+
+def as_printed(kind: ProfileKind) -> ProfileKind:
+    """``kind`` validated against the wildcards as the standard prints them: the variant of its
+    schema without the deviations wildcard-lax and wildcard-bounds of ERRATA.md, for the schemas
+    that have wildcards; ``kind`` itself otherwise (its schema is as printed, once repaired)."""
+    if kind.xsd is None or not (data_dir("schemas") / AS_PRINTED / kind.xsd).is_file():
+        return kind
+    return replace(kind, xsd=f"{AS_PRINTED}/{kind.xsd}")
+
+
+def write_validator_path(xsd: str) -> Path:
+    """The schema file lxml validates documents of ``xsd`` with: its XSD 1.0 rendition when it needs XSD 1.1."""
+    directory = data_dir("schemas")
+    return directory / "xsd10" / xsd if _BY_XSD[xsd].xsd_version == "1.1" else directory / xsd
+
+
+@functools.cache
+def load_write_validator(xsd: str) -> etree.XMLSchema:
+    """lxml's validator for documents of ``xsd``, loaded once per process (a few milliseconds)."""
+    from lxml import etree
+
+    parser = etree.XMLParser(resolve_entities=False, no_network=True)
+    return etree.XMLSchema(etree.parse(str(write_validator_path(xsd)), parser))
 
 
 @functools.cache
@@ -93,20 +133,12 @@ def build_schema(xsd: str) -> xmlschema.XMLSchemaBase:
 def _schema_class(xsd: str) -> type[xmlschema.XMLSchemaBase]:
     import xmlschema
 
-    return xmlschema.XMLSchema11 if _BY_XSD[xsd].xsd_version == "1.1" else xmlschema.XMLSchema10
+    # an as-printed variant ("as_printed/X.xsd") is read as its restored schema X.xsd is
+    return xmlschema.XMLSchema11 if _BY_XSD[Path(xsd).name].xsd_version == "1.1" else xmlschema.XMLSchema10
 
 
 # Bump when the pickled content or the build options change.
 _CACHE_FORMAT = "1"
-
-
-def cache_dir() -> Path:
-    """``$XDG_CACHE_HOME/edsconv`` when that variable is set, else a per-user directory in the temp dir."""
-    xdg = os.environ.get("XDG_CACHE_HOME")
-    if xdg and os.path.isabs(xdg):
-        return Path(xdg) / "edsconv"
-    user = os.getuid() if hasattr(os, "getuid") else "user"
-    return Path(tempfile.gettempdir()) / f"edsconv-{user}"
 
 
 def schema_cache_file(xsd: str, xmlschema_version: str) -> Path | None:
@@ -116,62 +148,31 @@ def schema_cache_file(xsd: str, xmlschema_version: str) -> Path | None:
     for part in (_CACHE_FORMAT, sys.version, xmlschema_version, str(schemas), xsd):
         digest.update(part.encode() + b"\0")
     try:
-        for path in sorted(schemas.glob("*.xsd")):
-            digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+        for path in sorted(schemas.glob("*.xsd")) + sorted((schemas / AS_PRINTED).glob("*.xsd")):
+            digest.update(path.relative_to(schemas).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
     except OSError:
         return None
     return cache_dir() / f"{Path(xsd).stem}-{digest.hexdigest()[:24]}.pickle"
 
 
-# Unpickling runs arbitrary code chosen by whoever wrote the file, so the cache
-# must never load a file someone else could have put there: the directory is
-# created 0o700 and must belong to the current user and not be group- or
-# world-writable, and the file itself must belong to the current user (checked
-# on the opened descriptor, symlinks refused). On systems without os.getuid
-# (Windows) the temp dir is already per-user and the ownership checks are skipped.
-def _trusted_dir(directory: Path) -> bool:
-    try:
-        os.makedirs(directory, mode=0o700, exist_ok=True)
-        status = os.stat(directory)
-    except OSError:
-        return False
-    if hasattr(os, "getuid"):
-        return status.st_uid == os.getuid() and not status.st_mode & 0o022
-    return True
-
-
-def _read_cache(cache_file: Path, schema_class: type) -> xmlschema.XMLSchemaBase | None:
+# Unpickling runs code chosen by whoever wrote the file: edsconv.cache reads only
+# files of the current user's own cache directory.
+def _read_cache(cache_file: Path, schema_class: type[xmlschema.XMLSchemaBase]) -> xmlschema.XMLSchemaBase | None:
     """The cached schema, or ``None`` when absent, untrusted or unreadable for any reason."""
-    if not _trusted_dir(cache_file.parent):
+    data = cache.read_file(cache_file)
+    if data is None:
         return None
     try:
-        descriptor = os.open(cache_file, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_BINARY", 0))
-    except OSError:
-        return None
-    try:
-        with os.fdopen(descriptor, "rb") as stream:
-            if hasattr(os, "getuid") and os.fstat(stream.fileno()).st_uid != os.getuid():
-                return None
-            schema = pickle.load(stream)
+        schema = pickle.loads(data)
     except Exception:  # noqa: BLE001 - a corrupt pickle can raise nearly anything; rebuild and overwrite
         return None
-    return schema if type(schema) is schema_class and schema.built else None
+    return schema if isinstance(schema, schema_class) and type(schema) is schema_class and schema.built else None
 
 
 def _write_cache(cache_file: Path, schema: xmlschema.XMLSchemaBase) -> None:
-    """Store atomically (temp file + rename); failures only cost start-up time later."""
-    if not _trusted_dir(cache_file.parent):
-        return
-    temporary = None
+    """Store the pickled schema; failures only cost start-up time later."""
     try:
-        # NamedTemporaryFile creates the file 0o600.
-        with tempfile.NamedTemporaryFile("wb", dir=cache_file.parent, prefix=".tmp-", delete=False) as stream:
-            temporary = stream.name
-            pickle.dump(schema, stream, protocol=pickle.HIGHEST_PROTOCOL)
-        os.replace(temporary, cache_file)
-    except Exception:  # noqa: BLE001 - read-only or full disk, unpicklable object: keep the built schema
-        if temporary is not None:
-            try:
-                os.unlink(temporary)
-            except OSError:
-                pass
+        data = pickle.dumps(schema, protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception:  # noqa: BLE001 - an unpicklable object: keep the built schema
+        return
+    cache.write_file(cache_file, data)

@@ -16,7 +16,7 @@ from edsconv.lsp.settings import settings_for as editor_settings
 GOOD = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text(encoding="ascii")
 #: EDS103 (error), EDS114 (warning) and a non-ASCII comment (EDS005, warning)
 FAULTY = GOOD.replace("ProdCode = 1001;", "ProdCode = 01001;").replace(
-    "CreateDate = 11-22-2026;", "CreateDate = 1-2-2026;") + "$ caf\u00e9\n"
+    "CreateDate = 11-22-2026;", "CreateDate = 11-22-1994;") + "$ caf\u00e9\n"
 
 
 def run(*args: str):

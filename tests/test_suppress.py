@@ -11,9 +11,9 @@ from edsconv.diagnostics import Selection
 from edsconv.eds.reader import parse
 
 GOOD = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text(encoding="ascii")
-#: ProdCode with leading zeros (EDS103) and a CreateDate of one-digit parts (EDS114)
+#: ProdCode with leading zeros (EDS103) and a CreateDate before 1996 (EDS114, a warning)
 FAULTY = GOOD.replace("ProdCode = 1001;", "ProdCode = 01001;").replace("CreateDate = 11-22-2026;",
-                                                                       "CreateDate = 1-2-2026;")
+                                                                       "CreateDate = 11-22-1994;")
 
 
 def codes(text: str, rules: FileRules = lint.EVERY_RULE) -> list[str]:

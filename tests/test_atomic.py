@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import signal
 import stat
+import threading
 from pathlib import Path
 
 import pytest
@@ -124,7 +125,9 @@ def test_a_signal_between_the_renames_waits_until_both_are_done(tmp_path: Path, 
 
     def replace_then_signal(source: str, target: Path) -> None:
         real_replace(source, target)
-        os.kill(os.getpid(), signal.SIGTERM)
+        # to this thread: the mask is per thread, and a process-directed signal may go to another
+        # thread of the test runner (pytest-xdist's); the command line runs in one thread
+        signal.pthread_kill(threading.get_ident(), signal.SIGTERM)
 
     monkeypatch.setattr(atomic.os, "replace", replace_then_signal)
     with pytest.raises(Interrupted):
@@ -154,8 +157,6 @@ def test_a_device_is_written_to_not_replaced(tmp_path: Path) -> None:
 
 
 def test_a_named_pipe_is_written_to_not_replaced(tmp_path: Path) -> None:
-    import threading
-
     pipe = tmp_path / "pipe"
     os.mkfifo(pipe)
     received: list[bytes] = []

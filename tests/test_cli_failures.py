@@ -150,6 +150,7 @@ def test_lint_of_one_long_line_of_letters_says_what_was_expected(tmp_path: Path)
     path.write_text("A" * 5_000_000)
     result = CliRunner().invoke(cli, ["lint", str(path)])
     assert result.exit_code == 1
-    assert result.stdout == (f"{path}:1:1: EDS001 unexpected 'AAAAAAAAAAAAAAAAAAAAAAAAAAA...': expected a section "
-                             "header '[Name]', an entry 'Keyword =' or the end of the file [C.4.1.2.2]\n")
+    assert result.stdout == (f"{path}:1:1: error: EDS001 unexpected 'AAAAAAAAAAAAAAAAAAAAAAAAAAA...': "
+                             "expected a section header '[Name]', an entry 'Keyword =' or the end of the file "
+                             "[C.4.1.2.2]\n")
     assert "something else" not in result.stdout

@@ -21,7 +21,7 @@ FAULTS = {
     "EDS099": ("VendCode = 65535;", "VendCode = 65535;   $ edsconv: ignore[EDS102]"),
     "EDS103": ("ProdCode = 1001;", "ProdCode = 01001;"),
     "EDS207": ('"",                     $ help string', ',                     $ help string'),
-    "EDS220": ("[Device Classification]", "[DEVICE classification]"),
+    "EDS222": ("[Device Classification]", "[DEVICE classification]"),
 }
 
 
@@ -64,7 +64,7 @@ def test_faults_without_a_single_repair_are_left_alone():
     # [DEVICE] when the file already has a [Device]: renaming would make a duplicate
     text = GOOD + "\n[DEVICE]\n        Extra = 1;\n"
     outcome = fix.fix_source(text.encode(), "x.eds", lint.check)
-    assert "EDS220" in [d.code for d in outcome.diagnostics] and outcome.data == text.encode()
+    assert "EDS222" in [d.code for d in outcome.diagnostics] and outcome.data == text.encode()
 
 
 def test_unused_code_among_several_is_removed_from_the_list():

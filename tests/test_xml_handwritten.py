@@ -125,7 +125,7 @@ def test_a_value_that_cannot_be_read_is_an_error_and_exit_1(tmp_path, name, old,
     assert validate_file(path).diagnostics == []
     line = source[:source.index(old)][:source[:source.index(old)].rindex(element)].count("\n") + 1
     _, problems = xml2eds(path)
-    assert [problem.split(" ")[1] for problem in problems] == ["XML201"]
+    assert [problem.split(" ")[2] for problem in problems] == ["XML201"]
     assert problems[0].startswith(f"{path}:{line}:")
     result = CliRunner().invoke(cli, ["xml2eds", str(path)])
     assert result.exit_code == 1

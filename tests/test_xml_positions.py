@@ -37,7 +37,7 @@ def test_a_device_value_that_cannot_be_read_is_at_its_element(tmp_path):
     assert (line, column) == (150, 11)
     diagnostics = read_device_profile(read_xml(path), Device())
     assert where(diagnostics) == [("XML201", str(path), line, column)]
-    assert diagnostics[0].format().startswith(f"{path}:150:11: XML201")
+    assert diagnostics[0].format().startswith(f"{path}:150:11: error: XML201")
 
 
 def test_an_extension_that_cannot_be_read_is_at_its_element(tmp_path):

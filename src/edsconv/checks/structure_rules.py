@@ -338,7 +338,6 @@ KEYWORD_BEYOND_2003 = rule(
 )
 SECTION_BEYOND_2003 = rule(
     "EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)",
-    fix="safe",
     explanation="""
         A section that ISO 15745-4:2003 does not define and that is not vendor-specific,
         but that later CIP editions define: `[Capacity]`, the object class sections
@@ -376,6 +375,7 @@ UNKNOWN_KEYWORD = rule(
     "EDS222", WARNING, "C.4.1.2.2.10",
     "A keyword that neither ISO 15745-4:2003 nor the newer CIP tables define, and that is not vendor-specific",
     clause_note="C.4.1.2.2.5 sections, C.4.1.2.2.9 entries, C.4.1.4.4 classifications",
+    fix="safe",
     explanation="""
         A section keyword, entry keyword or classification keyword that no table edsconv
         holds defines, and that is not vendor-specific (`VendorID_keyword`): not the

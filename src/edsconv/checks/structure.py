@@ -19,6 +19,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
+from edsconv import cip_tables
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
 from edsconv.checks.structure_rules import (
@@ -166,7 +167,7 @@ def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
         problem = _keyword_problem(section.name)
         if problem is not None:
             yield ctx.at(problem[0], f"section [{section.name}]: {problem[1]}", section)
-        elif tables.section_spec(section.name) is None:
+        elif cip_tables.known(section.name) is None:
             yield ctx.at(SECTION_BEYOND_2003, f"[{section.name}] is not a section of ISO 15745-4:2003 (kept)",
                          section)
 
@@ -228,24 +229,23 @@ def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     digit, and keywords the 2003 text does not define (kept, reported as information)."""
     for section in ctx.eds.sections:
         spec = tables.SECTIONS.get(section.name)
+        newer = spec is None and cip_tables.section_spec(section.name) is not None
         for entry in section.entries:
             problem = _keyword_problem(entry.keyword)
             if problem is not None:
                 yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
-            elif spec is not None and not tables.is_vendor_keyword(entry.keyword) \
-                    and spec.entry(entry.keyword) is None:
-                yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(spec, entry.keyword)} (kept)",
-                             entry)
+            elif (spec is not None or newer) and cip_tables.known(section.name, entry.keyword) is None:
+                why = _why_undefined(spec, entry.keyword) if spec is not None else \
+                    f"is not an entry of [{section.name}] in the newer CIP tables"
+                yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {why} (kept)", entry)
 
 
 def _why_undefined(section: tables.SectionSpec, keyword: str) -> str:
-    family = tables.split_numbered(keyword)[0]
-    if family in tables.RESERVED_ENTRY_KEYWORDS.get(section.name, ()):
-        return f"is reserved by ISO 15745-4:2003 for future entry types of [{section.name}]"
+    # the keyword the 2003 text reserves for future [Assembly] entry types (VariantN) the newer tables define
     elsewhere = sorted({spec.section for spec in tables.entries_named(keyword)})
     if elsewhere:
         return f"is defined by ISO 15745-4:2003 for [{'], ['.join(elsewhere)}], not for [{section.name}]"
-    return f"is not an entry of [{section.name}] in ISO 15745-4:2003"
+    return f"is not an entry of [{section.name}] in ISO 15745-4:2003 or the newer CIP tables"
 
 
 @check(NUMBERING)
@@ -294,7 +294,7 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
             if spec.max_fields == 1:
                 yield ctx.at(TOO_MANY_FIELDS, f"{entry.keyword} holds one value ({spec.fields[0].name}) but has "
                                               f"{len(entry.fields)} fields", extra)
-            else:
+            elif len(entry.fields) > (cip_tables.known_field_count(spec) or 0):
                 yield ctx.at(FIELDS_BEYOND_2003, f"{entry.keyword} has {len(entry.fields)} fields; ISO 15745-4:2003 "
                                                  f"defines {spec.max_fields} (later fields kept)", extra)
         for index, item in enumerate(entry.fields):
@@ -318,7 +318,8 @@ def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
             problem = _keyword_problem(word) if is_keyword_field and isinstance(item.value, Scalar) else None
             if problem is not None:
                 yield ctx.at(problem[0], f"{entry.keyword} field {index + 1}: {word}: {problem[1]}", item)
-            elif field_spec.choices and not _is_choice(word, field_spec):
+            elif field_spec.choices and not _is_choice(word, field_spec) \
+                    and cip_tables.known_choice(field_spec, word) is None:
                 yield _not_a_choice(ctx, entry, index, word, field_spec, item)
 
 

@@ -150,14 +150,15 @@ FIELDS_BEYOND_2003 = rule(
     "EDS209", INFO, "C.4.1.2.2.12", "An entry has more fields than ISO 15745-4:2003 defines for it (kept)",
     explanation="""
         An entry with a fixed layout of several fields has more fields than
-        ISO 15745-4:2003 defines. Later CIP editions append fields (CIP Safety
-        connections have 17); edsconv keeps them and does not interpret them.
+        ISO 15745-4:2003 and the newer CIP tables define (those add the two CIP Safety
+        fields of a ConnectionN, which makes 17); edsconv keeps them and does not
+        interpret them.
     """,
     bad=block("""
         Connection1 = 0x04010002, 0x44640405, , 2, Assem2, , 2, Assem1, , , , ,
-                      "Owner", "", "20 04 24 01 2C 02 2C 01", 1;
+                      "Owner", "", "20 04 24 01 2C 02 2C 01", , 1, 7;
     """),
-    good="the 15 fields of Table C.22.",
+    good="the 15 fields of Table C.22, or 17 with the CIP Safety fields.",
     labels=("Bad (for the 2003 text)", "Good"),
 )
 RESERVED_FIELD_SET = rule(
@@ -297,33 +298,34 @@ KEYWORD_STARTS_WITH_DIGIT = rule(
     """),
 )
 KEYWORD_BEYOND_2003 = rule(
-    "EDS219", INFO, "C.4.1.2.2.9", "A keyword not defined by ISO 15745-4:2003 (kept)",
+    "EDS219", INFO, "C.4.1.2.2.9", "A keyword defined neither by ISO 15745-4:2003 nor by the newer CIP tables (kept)",
     explanation="""
-        A keyword that ISO 15745-4:2003 does not define: an entry keyword of a section
-        the 2003 text defines (`IconContents`, `AssemExaN`, `MaxInst` in
-        `[Connection Manager]`, the reserved `VariantN` of `[Assembly]`), or a first
-        field of `ClassN`/`PortN` outside the 2003 list (`Safety`). Later CIP editions
-        define many of them; edsconv keeps them as they are.
+        An entry keyword that neither ISO 15745-4:2003 nor the tables of later CIP editions
+        (edsconv.cip_tables: `IconContents`, `AssemExaN`, the object-class entries ...)
+        define for its section, or a first field of `ClassN`/`PortN` outside both lists.
+        Vendor-specific keywords (`65535_Note`) are not reported. edsconv keeps the entry
+        as it is.
     """,
     bad=block("""
         [Device]
-                IconContents = "...";
+                IconContent = "...";            $ IconContents misspelt
     """),
-    good="vendor-specific keywords (`65535_IconContents`).",
+    good="`IconContents`, and vendor-specific keywords (`65535_IconData`).",
     labels=("Example", "Not reported"),
 )
 SECTION_BEYOND_2003 = rule(
-    "EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)",
+    "EDS220", INFO, "C.4.1.2.2.5", "A section defined neither by ISO 15745-4:2003 nor by the newer CIP tables (kept)",
     explanation="""
-        A section that ISO 15745-4:2003 does not define and that is not vendor-specific:
-        `[Capacity]`, the object class sections (`[TCP/IP Interface Class]`,
-        `[DLR Class]` ...), DeviceNet's `[IO_Info]`. Kept as it is.
+        A section that neither ISO 15745-4:2003 nor the tables of later CIP editions define
+        (those hold `[Capacity]`, the object class sections such as `[TCP/IP Interface
+        Class]` and `[DLR Class]`, DeviceNet's `[IO_Info]` ...), and that is not
+        vendor-specific (`[65535_Tool]`, `[Class940_Vendor1]`). Kept as it is.
     """,
     bad=block("""
-        [Capacity]
+        [Diagnostics Extra]
                 MaxIOConnections = 4;
     """),
-    good="`[65535_Capacity]`.",
+    good="`[Capacity]`, `[65535_Capacity]`.",
     labels=("Example", "Not reported"),
 )
 NO_TCP_PORT = rule(

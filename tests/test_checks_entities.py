@@ -99,7 +99,7 @@ CASES = {
                eds(assembly=[ASSEM_IN, 'Assem101 = "Pad","",,,,,8,;'])),
     "EDS326": (eds(assembly=[ASSEM_IN, 'Assem101 = "Outer","",4,,,,,Assem100;' + M]),
                eds(assembly=[ASSEM_IN, 'Assem101 = "Outer","",4,,,,,Param1;'])),
-    "EDS327": (eds(assembly=['Assem100 = "In","",4,,,,32,Assem100;' + M]),
+    "EDS327": (eds(assembly=['Assem100 = "In","",8,,,,32,Param1,32,Assem100;' + M]),
                eds(assembly=[ASSEM_IN, 'Assem101 = "Outer","",4,,,,32,Assem100;'])),
     "EDS328": (eds(assembly=[ASSEM_IN, 'Assem101 = "Path","",4,,,,32,"20 04 25 64 00 30 03";' + M]),
                eds(assembly=[ASSEM_IN, 'Assem101 = "Path","",4,,,,32,"20 04 25 00 64 00 30 03";'])),

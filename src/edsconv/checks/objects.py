@@ -11,6 +11,7 @@ practice only with a warning at most. The rules and their documentation are in
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import Any
 
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
@@ -32,10 +33,9 @@ from edsconv.checks.object_rules import (
     UNDEFINED_PRACTICE_REFERENCE,
 )
 from edsconv.diagnostics import Diagnostic
-from edsconv.eds.syntax import Entry, Field, Scalar, Section
+from edsconv.eds.syntax import Entry, Field, Scalar
 from edsconv.model import Reference
-from edsconv.model.build import as_written
-from edsconv.model.cip_build import range_problem, read_field, section_table
+from edsconv.model.cip_build import newer_entries, range_problem, reading
 from edsconv.model.values import ValueProblem
 
 #: The reference families whose entries the typed model holds (a VariantN ... is kept, not resolved).
@@ -49,19 +49,6 @@ def _source(provenance: tables.Provenance | None) -> str:
     return f"eds-pie {provenance.eds_pie}"
 
 
-def newer_entries(ctx: Context) -> Iterator[tuple[Section, Entry, tables.EntrySpec]]:
-    """Every entry the cip_tables define (in a section beyond the 2003 text, or added to a 2003
-    section), with its spec."""
-    for section in ctx.eds.sections:
-        table = section_table(section.name, extension=section.name in tables.SECTIONS)
-        if table is None:
-            continue
-        for entry in section.entries:
-            spec = tables.find_entry(table.entries, entry.keyword)
-            if spec is not None:
-                yield section, entry, spec
-
-
 def _at(entry: Entry, index: int) -> Field | Entry:
     return entry.fields[index] if index < len(entry.fields) else entry
 
@@ -72,37 +59,41 @@ def _at(entry: Entry, index: int) -> Field | Entry:
 @check(NOT_DOCUMENTED_TYPE, OUT_OF_DOCUMENTED_RANGE, NOT_PRACTICE_TYPE, NOT_A_LISTED_KEYWORD)
 def field_types(ctx: Context) -> Iterator[Diagnostic]:
     """Each field of a newer entry is of one of its FieldSpec's types, in range, one of its keywords;
-    required fields are given and no field lies beyond the layout."""
-    for _, entry, spec in newer_entries(ctx):
+    required fields are given and no field lies beyond the layout. The fields were read once, by
+    model.cip_build (GenericEntry.readings)."""
+    for _, _, generic, spec in newer_entries(ctx.device):
+        entry = generic.entry
+        if entry is None:
+            continue
         practice = spec.provenance is None or spec.provenance.practice_only
         if spec.max_fields is not None and len(entry.fields) > spec.max_fields:
             rule_ = NOT_PRACTICE_TYPE if practice else NOT_DOCUMENTED_TYPE
             yield ctx.at(rule_, f"{entry.keyword} has {len(entry.fields)} fields; it has {spec.max_fields} "
                                 f"({_source(spec.provenance)})", entry.fields[spec.max_fields])
-        for index, item in enumerate(entry.fields[:spec.max_fields]):
+        readings = generic.readings or [reading(value, spec.field_at(i + 1)) for i, value in enumerate(generic.values)]
+        for index in range(min(len(entry.fields), spec.max_fields or len(entry.fields))):
             field_spec = spec.field_at(index + 1)
             if field_spec is not None:
-                yield from _field(ctx, entry, index, item, field_spec)
+                yield from _field(ctx, entry, index, field_spec, readings[index])
 
 
-def _field(ctx: Context, entry: Entry, index: int, item: Field, field_spec: tables.FieldSpec) -> Iterator[Diagnostic]:
+def _field(ctx: Context, entry: Entry, index: int, field_spec: tables.FieldSpec,
+           read: tuple[Any, Exception | None]) -> Iterator[Diagnostic]:
     practice = field_spec.provenance is None or field_spec.provenance.practice_only
     where = f"{entry.keyword} field {index + 1} ({field_spec.name})"
+    item = entry.fields[index]
+    value, problem = read
     if item.value is None:
         if field_spec.presence is tables.Presence.REQUIRED and not field_spec.repeats:
             rule_ = NOT_PRACTICE_TYPE if practice else NOT_DOCUMENTED_TYPE
             yield ctx.at(rule_, f"{where} is required but empty ({_source(field_spec.provenance)})", item)
-        return
-    try:
-        value = read_field(as_written(item.value), field_spec)
-    except ValueProblem as problem:
+    elif isinstance(problem, ValueProblem):
         if practice:
             rule_ = NOT_PRACTICE_TYPE
         else:
             rule_ = OUT_OF_DOCUMENTED_RANGE if range_problem(problem) else NOT_DOCUMENTED_TYPE
         yield ctx.at(rule_, f"{where}: {problem.message} ({_source(field_spec.provenance)})", item)
-        return
-    if field_spec.choices and isinstance(value, str) and isinstance(item.value, Scalar) \
+    elif field_spec.choices and isinstance(value, str) and isinstance(item.value, Scalar) \
             and value not in field_spec.choices:
         allowed = ", ".join(str(choice) for choice in field_spec.choices)
         rule_ = NOT_PRACTICE_TYPE if practice else NOT_A_LISTED_KEYWORD

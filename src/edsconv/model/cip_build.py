@@ -14,12 +14,13 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from typing import Any
 
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
-from edsconv.eds.syntax import Scalar, String, Value, ValueKind
+from edsconv.eds.syntax import Scalar, String, ValueKind
 from edsconv.model.cip import (
     INTERFACE_ATTRIBUTES,
     SINGLE_ATTRIBUTES,
@@ -59,45 +60,57 @@ ASSEMBLY_FAMILIES = ("AssemExa", "ProxyAssemExa", "ProxiedAssemExa")
 # --- one field -------------------------------------------------------------------------------
 
 
+@dataclass(frozen=True, slots=True)
+class _Plan:
+    """How to read a field of one FieldSpec type (``UINT|ParamRef``): its alternatives by shape."""
+
+    #: the keyword patterns of its reference kinds, in the type's order
+    references: tuple[re.Pattern[str], ...]
+    #: the data type and keyword alternatives, in the type's order
+    values: tuple[str, ...]
+    service: bool
+    untyped: bool
+    names: str
+
+
+@functools.cache
+def _plan(eds_type: str) -> _Plan:
+    kinds = eds_type.split("|")
+    values = tuple("EDS_Char_Array" if k == "Base64Icon" else k for k in kinds  # the icon's text: EDS509 / EDS510
+                   if k not in _REFERENCE_KINDS and k not in ("Empty", "Untyped", "ServiceSpec"))
+    names = " or ".join(k.removesuffix("Ref") + "N" if k in _REFERENCE_KINDS else k for k in kinds if k != "Empty")
+    return _Plan(tuple(_REFERENCE_KINDS[k] for k in kinds if k in _REFERENCE_KINDS), values, "ServiceSpec" in kinds,
+                 "Untyped" in kinds, names)
+
+
 def read_field(value: Written, field_spec: tables.FieldSpec) -> Any:
     """A written field value as the Python value of the first of its FieldSpec's types it fits;
     None for an empty field. ValueProblem when it fits none: the notation or range problem of the
-    number type it was written as, else WRONG_KIND."""
+    type it was written as, else WRONG_KIND."""
     if value is None:
         return None
+    plan = _plan(field_spec.eds_type)
+    if plan.untyped:
+        return _spelling(value)
+    if plan.service:
+        return _service(value)
+    if isinstance(value, list):
+        raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found a brace group")
+    if isinstance(value, Scalar) and value.kind is ValueKind.WORD:
+        for pattern in plan.references:
+            if pattern.fullmatch(value.raw):
+                family, number = tables.split_numbered(value.raw)
+                return Reference(value.raw, family, number or 0)
     found: list[ValueProblem] = []
-    for kind in field_spec.alternatives:
+    for kind in plan.values:
         try:
-            return _read(value, kind)
+            return convert(value, kind)
         except ValueProblem as problem:
             found.append(problem)
     relevant = next((p for p in found if p.rule is not WRONG_KIND), None)
     if relevant is not None:
         raise relevant
-    raise ValueProblem(WRONG_KIND, f"expected {_names(field_spec)}, found {_spelling(value)}")
-
-
-def _read(value: Written, kind: str) -> Any:
-    if kind == "Empty":
-        raise ValueProblem(WRONG_KIND, "expected an empty field")
-    if kind == "Untyped":
-        return _spelling(value)
-    if kind == "ServiceSpec":
-        return _service(value)
-    if isinstance(value, list):
-        raise ValueProblem(WRONG_KIND, "a brace group is not allowed here")
-    if kind in _REFERENCE_KINDS:
-        return _reference(value, _REFERENCE_KINDS[kind])
-    if kind == "Base64Icon":
-        kind = "EDS_Char_Array"  # what the text holds is the icon check's matter (EDS509, EDS510)
-    return convert(value, kind)
-
-
-def _reference(value: Value, pattern: re.Pattern[str]) -> Reference:
-    if isinstance(value, Scalar) and value.kind is ValueKind.WORD and pattern.fullmatch(value.raw):
-        family, number = tables.split_numbered(value.raw)
-        return Reference(value.raw, family, number or 0)
-    raise ValueProblem(WRONG_KIND, f"expected {pattern.pattern}")
+    raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {_spelling(value)}")
 
 
 def _service(value: Written) -> Service:
@@ -113,11 +126,6 @@ def _service(value: Written) -> Service:
     if any(item is None or isinstance(item, list) for item in rest):
         raise ValueProblem(WRONG_KIND, "a service group lists attribute IDs, or *")
     return Service(code, tuple(convert(item, "UINT") for item in rest))
-
-
-def _names(field_spec: tables.FieldSpec) -> str:
-    return " or ".join(k.removesuffix("Ref") + "N" if k in _REFERENCE_KINDS else k
-                       for k in field_spec.alternatives if k != "Empty")
 
 
 def _spelling(value: Written) -> str:
@@ -148,8 +156,18 @@ def section_table(name: str, extension: bool) -> tables.SectionSpec | None:
     return cip_tables.SECTION_EXTENSIONS.get(name) if extension else cip_tables.section_spec(name)
 
 
-def entry_table(section: tables.SectionSpec, keyword: str) -> tables.EntrySpec | None:
-    return tables.find_entry(section.entries, keyword)
+def newer_entries(device: Device) -> Iterator[tuple[str, tables.SectionSpec, GenericEntry, tables.EntrySpec]]:
+    """(section name, its cip_tables section, entry, entry spec) of every entry kept as written that
+    the cip_tables define: in a section beyond the 2003 text, or added to a 2003 section."""
+    for name, entries, extension in (*((n, e, True) for n, e in device.extra_entries.items()),
+                                     *((s.name, s.entries, False) for s in device.other_sections)):
+        table = section_table(name, extension)
+        if table is None:
+            continue
+        for generic in entries:
+            spec = tables.find_entry(table.entries, generic.keyword)
+            if spec is not None:
+                yield name, table, generic, spec
 
 
 class _Builder:
@@ -161,22 +179,16 @@ class _Builder:
             "EnumPar": self.enum_par, "Assembly": self.assembly, "Device": self.device_entry,
         }
 
-    def section(self, name: str, entries: list[GenericEntry], extension: bool) -> None:
-        table = section_table(name, extension)
-        if table is None:
-            return
-        for generic in entries:
-            spec = entry_table(table, generic.keyword)
-            if spec is None:
-                continue
-            values = [_quiet(value, spec.field_at(index + 1)) for index, value in enumerate(generic.values)]
-            if spec.section == _COMMON:
-                self.common(name, generic, spec, values)
-            elif spec.keyword in SINGLE_ATTRIBUTES.get(table.name, {}) and table.name in _ADDITION_SECTIONS:
-                attribute = SINGLE_ATTRIBUTES[table.name][spec.keyword]
-                setattr(self.additions(), attribute, _naming(attribute, _single(spec, values)))
-            elif table.name in self.handlers:
-                self.handlers[table.name](name, generic, spec, values)
+    def entry(self, name: str, table: tables.SectionSpec, generic: GenericEntry, spec: tables.EntrySpec) -> None:
+        generic.readings = [reading(value, spec.field_at(index + 1)) for index, value in enumerate(generic.values)]
+        values = [value for value, _ in generic.readings]
+        if spec.section == _COMMON:
+            self.common(name, generic, spec, values)
+        elif spec.keyword in SINGLE_ATTRIBUTES.get(table.name, {}) and table.name in _ADDITION_SECTIONS:
+            attribute = SINGLE_ATTRIBUTES[table.name][spec.keyword]
+            setattr(self.additions(), attribute, _naming(attribute, _single(spec, values)))
+        elif table.name in self.handlers:
+            self.handlers[table.name](name, generic, spec, values)
 
     def additions(self) -> Additions:
         self.device.additions = self.device.additions or Additions()
@@ -325,14 +337,14 @@ def _io_reference(family: str, number: Any) -> Reference | None:
     return Reference(f"{family}{number}", family, number) if isinstance(number, int) and number else None
 
 
-def _quiet(value: Written, field_spec: tables.FieldSpec | None) -> Any:
-    """A field read by its spec; None when it does not fit (the checks report it) or has no spec."""
+def reading(value: Written, field_spec: tables.FieldSpec | None) -> tuple[Any, ValueProblem | None]:
+    """A field read by its spec: (value, None), or (None, why it does not fit); (None, None) without a spec."""
     if field_spec is None:
-        return None
+        return None, None
     try:
-        return read_field(value, field_spec)
-    except ValueProblem:
-        return None
+        return read_field(value, field_spec), None
+    except ValueProblem as problem:
+        return None, problem
 
 
 def _single(spec: tables.EntrySpec, values: list[Any]) -> Any:
@@ -350,10 +362,8 @@ def attach(device: Device) -> Device:
     """Set the typed view of the content beyond the 2003 text on ``device``, from its
     ``extra_entries`` and ``other_sections``; returns the device."""
     builder = _Builder(device)
-    for name, entries in device.extra_entries.items():
-        builder.section(name, entries, extension=True)
-    for section in device.other_sections:
-        builder.section(section.name, section.entries, extension=False)
+    for name, table, generic, spec in newer_entries(device):
+        builder.entry(name, table, generic, spec)
     builder.resolve()
     return device
 

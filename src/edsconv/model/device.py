@@ -437,6 +437,9 @@ class GenericEntry:
     keyword: str
     values: list
     entry: Entry | None = field(default=None, compare=False, repr=False)
+    #: for an entry the newer CIP tables define: each field read by its type, (value, ValueProblem or
+    #: None), as model.cip_build.attach read it (the checks reuse it); None otherwise
+    readings: list[tuple[Any, Exception | None]] | None = field(default=None, compare=False, repr=False)
 
 
 @dataclass(slots=True)

@@ -73,7 +73,7 @@ def test_fmt_goes_on_after_a_file_it_cannot_read(tmp_path: Path):
     result = CliRunner().invoke(cli, ["fmt", "--check", str(tmp_path / "missing.eds"), str(canonical)])
     assert result.exit_code == 2
     assert result.stderr.splitlines() == [f"{tmp_path / 'missing.eds'}: cannot read: No such file or directory",
-                                          "0 file(s) would be reformatted, 1 unchanged"]
+                                          "0 file(s) would be reformatted, 1 unchanged, 1 not formatted"]
 
 
 def test_architecture_names_every_module():

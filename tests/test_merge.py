@@ -61,6 +61,14 @@ def test_rack_numbers_and_spelling_do_not_matter():
     assert matching_racks(adapter, module) == [("Rack1", "Rack3")]
 
 
+def test_racks_do_not_match_by_minor_revision():
+    # C.4.1.4.3: changes in minor revisions shall not be used to match a device with an EDS
+    adapter = edsconv.parse(ADAPTER_MODULAR)
+    assert matching_racks(adapter, edsconv.parse(MODULE_MODULAR.replace("1, 1,,,,", "1, 7,,,,"))) == [
+        ("Rack1", "Rack3")]
+    assert matching_racks(adapter, edsconv.parse(MODULE_MODULAR.replace("1, 1,,,,", "2, 1,,,,"))) == []
+
+
 def test_output_sections_and_keywords(merged):
     assert list(merged) == ["Param1", "Enum1", "Param2", "Enum2", "Assem1", "Assem2", "Connection1"]
     result = merge(load(ADAPTER), [load(MODULE)])

@@ -149,6 +149,9 @@ def test_eds110_url_without_a_scheme():
 
     assert url_codes("www.example.com") == ["EDS110"]
     assert url_codes("htts://www.example.com") == ["EDS110"]
+    assert url_codes("http://www.example.com/probe eds/a.eds") == ["EDS110"]  # RFC 1738: a space only as %20
+    assert url_codes("http://www.example.com/50%/a.eds") == ["EDS110"]
+    assert url_codes("http://www.example.com/probe%20eds/~a.eds#top") == []
     assert url_codes("https://www.example.com") == []
     assert url_codes("ftp://example.com/eds") == []
 
@@ -223,7 +226,9 @@ VALUE_CASES = {
                "[Params]\n" + PARAM.format(type="0xC7", size=2, values="0,100,0")),
     "EDS113": ("[Params]\n" + PARAM.format(type="0xEE", size=2, values="0,100,0"),
                "[Params]\n" + PARAM.format(type="0xC7", size=2, values="0,100,0")),
-    "EDS114": ("[File]\nCreateDate = 06-6-2001;", "[File]\nCreateDate = 06-06-2001;"),
+    "EDS114": ("[File]\nCreateDate = 01-01-1994;", "[File]\nCreateDate = 01-01-1996;"),
+    "EDS116": ('[Device]\nProdName = "Probe\x01Adapter";', '[Device]\nProdName = "Probe\\x01Adapter";'),
+    "EDS117": ('[Device]\nProdName = "Probe Adapter\\x00";', '[Device]\nProdName = "Probe\\x00Adapter";'),
     "EDS115": ("[File]\nRevision = 2.11;", "[File]\nRevision = 2.1;"),
 }
 

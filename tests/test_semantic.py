@@ -71,7 +71,7 @@ def test_connection_bits_decode_in_words(device):
     assert set_bits["class 1"] == "class 1: duplicate detect"
     assert set_bits["trigger cyclic"] == "trigger: cyclic"
     assert set_bits["exclusive-owner"] == "transport type: exclusive-owner"
-    assert device.ports[0].type_name == "TCP" and device.ports[0].port_number == 1
+    assert device.ports[0].type_name == "TCP" and device.ports[0].port_number == 2
 
 
 def test_engineering_value_uses_the_precision_only_with_extended_scaling():

@@ -205,7 +205,7 @@ def test_decode_path(text: str, summary: str):
 
 def test_ports_modular_and_other_sections(example: dict):
     (port,) = example["ports"]
-    assert (port["type"], port["name"], port["port_number"]) == ("TCP", "EtherNet/IP Port", 1)
+    assert (port["type"], port["name"], port["port_number"]) == ("TCP", "EtherNet/IP Port", 2)
     assert port["object_path"]["segments"][0]["text"] == "class 0xF5 (TCP/IP Interface)"
     assert example["modular"] is None
     chassis = document(REPO / "corpus" / "spec" / "figure_C11.eds")["modular"]

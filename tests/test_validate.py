@@ -6,7 +6,6 @@ import json
 import os
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -49,16 +48,16 @@ def test_unknown_header_and_foreign_roots_have_no_kind():
     assert detect_kind(etree.fromstring("<html/>")) is None
 
 
-def test_clean_files_print_nothing_and_exit_0():
+def test_clean_files_print_only_the_summary_and_exit_0():
     result = run(str(CORPUS / "adsnet-device" / "valid-complete.xml"), str(CORPUS / "cip-device" / "valid-chassis.xml"))
-    assert (result.return_value, result.output) == (0, "")
+    assert (result.return_value, result.stdout, result.stderr) == (0, "", "2 files: 0 errors, 0 warnings, 0 notes\n")
 
 
 def test_problems_are_reported_as_path_line_col_code_message_xpath_clause():
     path = CORPUS / "flnet-device" / "invalid-node-number.xml"
     result = run(str(path))
     assert result.return_value == 1
-    assert result.output == (
+    assert result.stdout == (
         f"{path}:40:11: XML003 value has to be greater or equal than 1 "
         "(at /ISO15745Profile/ProfileBody/DeviceManager/DeviceManager-Attributes/CommuServiceManager/DM-NodeNumber) "
         "[ISO 15745-4 B.1.5]\n")
@@ -88,7 +87,7 @@ def test_schema_option_forces_a_schema():
 def test_powerlink_xdd_is_recognised_as_info_and_exits_0():
     result = run(str(CORPUS / "powerlink-xdd" / "container.xml"))
     assert result.return_value == 0
-    assert "XML005 POWERLINK XDD profile container recognised; not validated" in result.output
+    assert "XML005 POWERLINK device description (XDD/XDC) recognised; not validated" in result.output
 
 
 def test_unsafe_and_malformed_files_are_diagnostics_not_tracebacks():
@@ -109,10 +108,10 @@ def _env() -> dict[str, str]:
     return {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "src"), os.environ.get("PYTHONPATH", "")])}
 
 
-def test_validating_a_small_file_starts_quickly():
-    """Schemas are loaded once and only for the kind at hand: a whole run stays well under a second."""
+def test_validate_runs_as_a_module_in_a_fresh_process():
+    """A fresh process builds or unpickles the schema it needs (start-up time is measured in benchmarks/)."""
     path = CORPUS / "eds-commnet-wrapper" / "valid-complete.xml"
-    started = time.perf_counter()
-    completed = subprocess.run([sys.executable, "-m", "edsconv", "validate", str(path)], env=_env())
-    assert completed.returncode == 0
-    assert time.perf_counter() - started < 2.0  # generous for loaded CI machines; measured ~0.4 s
+    completed = subprocess.run([sys.executable, "-m", "edsconv", "validate", str(path)], env=_env(),
+                               capture_output=True, text=True)
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout == ""

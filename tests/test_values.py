@@ -55,6 +55,13 @@ def code(convert, text: str, *args) -> str:
     return problem(convert, text, *args).rule.code
 
 
+def reading(convert, text: str, *args) -> tuple[str, object]:
+    """(code, value) of a value that breaks a rule but has one reading (ValueNote)."""
+    note = problem(convert, text, *args)
+    assert isinstance(note, ValueNote), f"{text}: {note.rule.code} without a reading"
+    return note.rule.code, note.value
+
+
 def test_every_integer_type_is_covered():
     assert {t.name for t in INTEGER_TYPES} == {"USINT", "UINT", "UDINT", "ULINT", "SINT", "INT", "DINT", "LINT",
                                                "BYTE", "WORD", "DWORD", "LWORD"}
@@ -150,8 +157,40 @@ def test_binary_for_other_types_is_eds101(data_type, number):
 
 @SETTINGS
 @given(st.sampled_from(BIT_TYPES), st.integers(1, 8))
-def test_binary_longer_than_the_bit_string_is_eds102(data_type, extra):
+def test_binary_beyond_the_bit_string_is_eds102(data_type, extra):
     assert code(to_integer, "0b1" + "0" * (data_type.binary_digits + extra - 1), data_type.name) == "EDS102"
+
+
+@SETTINGS
+@given(typed_value(BIT_TYPES), st.integers(1, 40))
+def test_binary_may_have_any_number_of_leading_zeros(case, zeros):
+    # C.4.1.3.9 allows leading zeros in binary notation and limits only the hexadecimal length
+    data_type, number = case
+    assert to_integer(value("0b" + "0" * (data_type.binary_digits + zeros) + format(number, "b")),
+                      data_type.name) == number
+
+
+@pytest.mark.parametrize(("type_name", "text", "clause"), [
+    ("USINT", "256", "C.4.1.3.7"), ("INT", "40000", "C.4.1.3.8"), ("WORD", "0b10000000000000000", "C.4.1.3.9"),
+    ("UINT", "0254", "C.4.1.3.7"), ("SINT", "-0012", "C.4.1.3.8"), ("DWORD", "0x0000000001", "C.4.1.3.9"),
+    ("REAL", "1e39", "C.4.1.3.10"), ("BOOL", "2", "C.4.1.3"),
+])
+def test_integer_problems_cite_the_clause_of_their_type(type_name, text, clause):
+    convert = to_real if type_name == "REAL" else to_integer
+    assert problem(convert, text, type_name).clause == clause
+
+
+@pytest.mark.parametrize(("type_name", "text", "code_", "expected"), [
+    ("UINT", "06402", "EDS103", 6402), ("USINT", "02", "EDS103", 2), ("INT", "-007", "EDS103", -7),
+    ("UINT", "0x0000000FE", "EDS104", 254), ("SINT", "0x00000000FF", "EDS104", -1),
+])
+def test_a_value_with_one_reading_keeps_it(type_name, text, code_, expected):
+    assert reading(to_integer, text, type_name) == (code_, expected)
+
+
+@pytest.mark.parametrize(("type_name", "text"), [("BOOL", "255"), ("USINT", "0256"), ("UINT", "0x1FFFF")])
+def test_a_value_outside_its_type_has_no_reading(type_name, text):
+    assert not isinstance(problem(to_integer, text, type_name), ValueNote)
 
 
 @pytest.mark.parametrize("data_type", INTEGER_TYPES, ids=lambda t: t.name)
@@ -169,6 +208,19 @@ def test_real_integer_notation(data_type, data):
     limits = data_type.floats
     number = data.draw(st.integers(limits.integer_min, limits.integer_max))
     assert to_real(value(str(number)), data_type.name) == float(number)
+
+
+@SETTINGS
+@given(st.sampled_from(REAL_TYPES), st.integers(1, 16), st.sampled_from(["", "-", "+"]), st.data())
+def test_real_decimal_notation_may_omit_the_point(data_type, digits, sign, data):
+    # C.4.1.3.10: up to 16 digits, "both the decimal point character and the sign character may be omitted"
+    raw = sign + data.draw(st.text("0123456789", min_size=digits, max_size=digits))
+    assert to_real(value(raw), data_type.name) == float(raw)
+
+
+@pytest.mark.parametrize("data_type", REAL_TYPES, ids=lambda t: t.name)
+def test_real_digits_beyond_16_are_eds108_with_the_value(data_type):
+    assert reading(to_real, "12345678901234567", data_type.name) == ("EDS108", 12345678901234567.0)
 
 
 @st.composite
@@ -293,26 +345,38 @@ def test_invalid_day_is_eds105(date, past):
     assert code(to_date, f"{date.month:02d}-{bad:02d}-{date.year}") == "EDS105"
 
 
-@pytest.mark.parametrize("text", ["02-29-1997", "00-10-2000", "12-00-2000", "01-01-95", "01-01-00", "1-1-123"])
-def test_date_examples_eds105(text):
-    assert code(to_date, text) == "EDS105"
+@pytest.mark.parametrize("text", ["02-29-1997", "00-10-2000", "12-00-2000", "1-1-123", "2024-13-01", "24-01-15"])
+def test_date_examples_eds105_without_a_value(text):
+    found = problem(to_date, text)
+    assert found.rule.code == "EDS105" and not isinstance(found, ValueNote)
 
 
 @SETTINGS
 @given(st.dates(datetime.date(1996, 1, 1), datetime.date(9999, 12, 31)), st.booleans())
-def test_one_digit_parts_are_eds114_with_the_value(date, one_digit_month):
+def test_one_digit_parts_are_eds105_with_the_value(date, one_digit_month):
     assume(date.month < 10 if one_digit_month else date.day < 10)
     month = f"{date.month}" if one_digit_month else f"{date.month:02d}"
     day = f"{date.day:02d}" if one_digit_month else f"{date.day}"
-    note = problem(to_date, f"{month}-{day}-{date.year}")
-    assert isinstance(note, ValueNote) and note.rule.code == "EDS114" and note.value == date
+    assert reading(to_date, f"{month}-{day}-{date.year}") == ("EDS105", date)
+
+
+@SETTINGS
+@given(st.dates(datetime.date(1996, 1, 1), datetime.date(9999, 12, 31)))
+def test_the_year_first_is_eds105_with_the_value(date):
+    assert reading(to_date, f"{date.year}-{date.month:02d}-{date.day:02d}") == ("EDS105", date)
 
 
 @SETTINGS
 @given(st.dates(datetime.date(1000, 1, 1), datetime.date(1995, 12, 31)))
 def test_years_before_1996_are_eds114_with_the_value(date):
-    note = problem(to_date, f"{date.month:02d}-{date.day:02d}-{date.year}")
-    assert isinstance(note, ValueNote) and note.rule.code == "EDS114" and note.value == date
+    assert reading(to_date, f"{date.month:02d}-{date.day:02d}-{date.year}") == ("EDS114", date)
+
+
+@SETTINGS
+@given(st.dates(datetime.date(1900, 1, 1), datetime.date(1995, 12, 31)))
+def test_two_digit_years_before_96_are_eds114_like_four_digit_ones(date):
+    # one fault, one severity: 94 is 1994 (an implied leading 19), as Figure C.2's 04-03-94
+    assert reading(to_date, f"{date.month:02d}-{date.day:02d}-{date.year % 100:02d}") == ("EDS114", date)
 
 
 @SETTINGS
@@ -320,6 +384,11 @@ def test_years_before_1996_are_eds114_with_the_value(date):
 def test_every_time(time):
     time = time.replace(microsecond=0)
     assert to_time(value(f"{time.hour:02d}:{time.minute:02d}:{time.second:02d}")) == time
+
+
+@pytest.mark.parametrize(("text", "expected"), [("9:30:00", datetime.time(9, 30)), ("09:5:07", datetime.time(9, 5, 7))])
+def test_one_digit_time_parts_are_eds106_with_the_value(text, expected):
+    assert reading(to_time, text) == ("EDS106", expected)
 
 
 @SETTINGS
@@ -344,8 +413,7 @@ def test_every_one_digit_revision(major, minor):
 def test_revision_examples():
     assert to_revision(value("1.4")) == Revision(1, 4)
     assert code(to_revision, "0.0") == "EDS107"
-    note = problem(to_revision, "2.11")
-    assert isinstance(note, ValueNote) and note.rule.code == "EDS115" and note.value == Revision(2, 11)
+    assert reading(to_revision, "2.11") == ("EDS115", Revision(2, 11))
     assert code(to_revision, "2") == "EDS107"
     assert code(to_revision, '"1.1"') == "EDS101"
 
@@ -354,8 +422,7 @@ def test_revision_examples():
 @given(st.integers(0, 999), st.integers(0, 999))
 def test_multi_digit_revisions_are_eds115_with_the_value(major, minor):
     assume(major > 9 or minor > 9)
-    note = problem(to_revision, f"{major}.{minor}")
-    assert isinstance(note, ValueNote) and note.rule.code == "EDS115" and note.value == Revision(major, minor)
+    assert reading(to_revision, f"{major}.{minor}") == ("EDS115", Revision(major, minor))
 
 
 # --- EPATH (C.4.1.3.6) ---------------------------------------------------------------

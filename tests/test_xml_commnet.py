@@ -98,7 +98,7 @@ def test_io_adapter_reads_back_typed_values(io_adapter):
     assert connection.help == ""
     assert connection.path[:2] == (PathItem(byte=0x20), PathItem(byte=0x04))
     assert device.ports == [Port(1, "TCP", "EtherNet/IP Port", tuple(PathItem(byte=b) for b in (0x20, 0xF5, 0x24, 1)),
-                                 1)]
+                                 2)]
 
 
 def test_io_adapter_port_and_required_minimum(io_adapter):
@@ -106,7 +106,7 @@ def test_io_adapter_port_and_required_minimum(io_adapter):
     assert port.get("id") == "Port1"
     assert [(child.tag, child.text) for child in port] == [
         ("PortTypeName", "TCP"), ("PortName", "EtherNet/IP Port"), ("PortObject", "20 F5 24 01"),
-        ("PortNumber", "1"), ("PortSpecific", None)]
+        ("PortNumber", "2"), ("PortSpecific", None)]
     header = io_adapter.find("ProfileHeader")
     assert header.findtext("ProfileIdentification") == "65535-12-1001-COMM"
     assert header.findtext("IASInterfaceType") == "CSI"

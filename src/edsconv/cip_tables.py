@@ -601,7 +601,7 @@ def known(section: str, keyword: str | None = None) -> Known | None:
     """Who defines ``[section]`` (``keyword`` None) or the entry ``keyword`` in it; None when
     neither the 2003 text, nor these tables, nor a vendor pattern does.
 
-    The one answer the checks consult (EDS006, EDS219, EDS220 and the unknown-keyword rule):
+    The one answer the checks consult (EDS006, EDS219, EDS222):
     a numbered family resolves (``TSpec3``), brackets are optional. A keyword counts in its own
     section only: ``MaxInst`` is known in ``[Ethernet Link Class]``, not in ``[Capacity]``.
     """

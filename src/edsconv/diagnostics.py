@@ -110,9 +110,9 @@ def _text(markdown: str) -> str:
 
 #: Every module that defines rules: :func:`load_rules` collects their module-level :class:`Rule` objects.
 RULE_MODULES = ("edsconv.lint", "edsconv.eds.reader_rules", "edsconv.model.values", "edsconv.model.build",
-                "edsconv.checks.structure_rules", "edsconv.checks.entity_rules", "edsconv.checks.object_rules",
-                "edsconv.merge",
-                "edsconv.xml.validate", "edsconv.xml.convert", "edsconv.xml.device_read")
+                "edsconv.checks.structure_rules", "edsconv.checks.entity_rules", "edsconv.checks.addressing_rules",
+                "edsconv.checks.object_rules", "edsconv.merge", "edsconv.xml.validate", "edsconv.xml.convert",
+                "edsconv.xml.device_read")
 
 
 @dataclass(frozen=True, slots=True)
@@ -199,8 +199,11 @@ class Diagnostic:
 
     @classmethod
     def of(cls, rule_: Rule, message: str, line: int = 0, column: int = 0, path: str | None = None,
-           end_line: int | None = None, end_column: int | None = None) -> Diagnostic:
-        return cls(rule_.code, message, line, column, path, rule_.severity, rule_.clause, end_line, end_column)
+           end_line: int | None = None, end_column: int | None = None, clause: str = "") -> Diagnostic:
+        """A diagnostic of ``rule_``; ``clause`` names the clause of this case where a rule checks one
+        requirement that several clauses state (GroupN numbering is C.4.1.4.7, RackN C.4.1.5.2.3)."""
+        return cls(rule_.code, message, line, column, path, rule_.severity, clause or rule_.clause, end_line,
+                   end_column)
 
     def format(self) -> str:
         """``path:line:col: CODE message [clause]`` as flake8 and ruff print it."""

@@ -41,9 +41,9 @@ from edsconv.model import (
     Reference,
     parameter_field_type,
 )
-from edsconv.model.cip_build import ASSEMBLY_FAMILIES, modelled, read_field
+from edsconv.model.cip_build import ASSEMBLY_FAMILIES, modelled, reading
 from edsconv.model.icon import decode_icon
-from edsconv.model.values import PathItem, StringIMember, ValueProblem
+from edsconv.model.values import PathItem, StringIMember
 
 #: Categories of changes, in the order the text output lists them.
 CATEGORIES = ("identity", "params", "assemblies", "connections", "others")
@@ -370,14 +370,14 @@ def _typed_entry(d: _Differ, what: str, spec: tables.EntrySpec, old: list | None
 
 
 def _typed_values(spec: tables.EntrySpec, values: list) -> list:
-    """Each field by its FieldSpec's type; a value that fits none stays as written (so a change still shows)."""
+    """Each field by its FieldSpec's type (its one reading when it breaks a notation rule); a value that
+    fits none stays as written (so a change still shows)."""
     out = []
     for index, value in enumerate(values):
         field_spec = spec.field_at(index + 1)
-        try:
-            out.append(read_field(value, field_spec) if field_spec is not None else value)
-        except ValueProblem:
-            out.append(value)
+        typed, problem = reading(value, field_spec)
+        as_written = field_spec is None or (problem is not None and typed is None)
+        out.append(value if as_written else typed)
     return out
 
 

@@ -12,9 +12,11 @@ copies of the input fields, spelled as written.
 matching Rack entry"). Both the adapter and the module are modules of a
 chassis (Figures C.12 - C.14), so each lists, in its ``[Modular]`` section, a
 ``RackN`` entry per chassis it fits (Table C.26). A Rack entry of the adapter
-and one of the module *match* when their electronic keys are equal: the first
-five fields, Vendor ID, Product Type, Product Code, Major Revision and Minor
-Revision, compared as numbers (``0xFFFF`` equals ``65535``). The numbers N of
+and one of the module *match* when their electronic keys are equal: Vendor ID,
+Product Type, Product Code and Major Revision, compared as numbers (``0xFFFF``
+equals ``65535``). The Minor Revision (field 5) is not compared: C.4.1.4.3 says
+changes in minor revisions "shall not be used by a configuration tool to match
+a device with an EDS". The numbers N of
 the two RackN keywords need not be equal, and the Legal Slot fields are not
 compared (the adapter sits in slot 0, Figure C.14, the module in others,
 Figures C.12 and C.13). One matching pair is enough; a module with none is not
@@ -45,7 +47,7 @@ C.15 has one) and the combined ``Param1`` share a number.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
 from edsconv import spec_tables as tables
@@ -61,8 +63,9 @@ NO_MATCHING_RACK = rule(
     explanation="""
         An adapter and a module EDS share no matching Rack entry, so they cannot be
         merged: no RackN of the module has the vendor, product type, product code and
-        major / minor revision of a RackN of the adapter (or the adapter has no Rack
-        entry at all).
+        major revision of a RackN of the adapter (or the adapter has no Rack entry at
+        all). The minor revision is not compared: C.4.1.4.3 forbids matching a device
+        with an EDS by it.
     """,
     bad="adapter `Rack1 = 65535, 101, 1, 1, 1,,,, 0;`, module `Rack1 = 65535, 101, 9, 1, 1,,,, 1, 2;`",
     good="module `Rack1 = 65535, 101, 1, 1, 1,,,, 1, 2;`",
@@ -107,7 +110,9 @@ BAD_MODULE_MEMBER_LIST = rule(
         `ModuleMemberList` does not stand in place of a whole Member Size / Member
         Reference pair: the other field of its pair is not empty, or it stands in
         fields 1-6 of the ProxyAssem (Table C.20; Figure C.15 prints it at field 6,
-        before the two reserved fields were counted).
+        before the two reserved fields were counted). `edsconv lint` reports it in the
+        adapter's file; `edsconv merge` reports it too and leaves the entry out of the
+        combination, whose member pairs would otherwise be shifted.
     """,
     bad='`ProxyAssem1 = "a",,,,,,16,ModuleMemberList;`',
     good='`ProxyAssem1 = "a",,,,,,,ModuleMemberList;`',
@@ -236,11 +241,16 @@ def rack_keys(eds: EdsFile) -> dict[str, tuple[int, ...]]:
     return keys
 
 
+#: The key fields two Rack entries are matched by: all but the Minor Revision (C.4.1.4.3).
+MATCHED_KEY_FIELDS = 4
+
+
 def matching_racks(adapter: EdsFile, module: EdsFile) -> list[tuple[str, str]]:
-    """(adapter RackN, module RackM) pairs with equal electronic keys."""
+    """(adapter RackN, module RackM) pairs whose electronic keys are equal but for the minor revision."""
     module_keys = rack_keys(module)
     return [(a_keyword, m_keyword) for a_keyword, a_key in rack_keys(adapter).items()
-            for m_keyword, m_key in module_keys.items() if a_key == m_key]
+            for m_keyword, m_key in module_keys.items()
+            if a_key[:MATCHED_KEY_FIELDS] == m_key[:MATCHED_KEY_FIELDS]]
 
 
 # --- combining -------------------------------------------------------------------------
@@ -395,29 +405,18 @@ class _Merger:
     # Assembly
 
     def _assem(self, proxy: Entry, proxied: Entry | None) -> list[Field] | None:
-        header = min(ASSEM_HEADER_FIELDS, len(proxy.fields))
-        ok = True
-        for position in range(header):
-            if _is_word(proxy.fields[position], MODULE_MEMBER_LIST):
-                self.report(BAD_MODULE_MEMBER_LIST, f"{proxy.keyword} field {position + 1} is {MODULE_MEMBER_LIST}, "
-                            "which may stand only in place of a member pair (fields 7, 8 and on, Table C.20)",
-                            self.adapter, proxy.fields[position])
-                ok = False
-        fields = self._plain(proxy, proxied, range(header)) if ok else None
-        ok = ok and fields is not None
+        faults = list(module_member_list_faults(proxy))
+        for place, message in faults:
+            self.report(BAD_MODULE_MEMBER_LIST, f"{proxy.keyword} {message}", self.adapter, place)
+        if faults:
+            return None
+        fields = self._plain(proxy, proxied, range(min(ASSEM_HEADER_FIELDS, len(proxy.fields))))
+        ok = fields is not None
         members = proxy.fields[ASSEM_HEADER_FIELDS:]
         combined: list[Field] = []
         for start in range(0, len(members), 2):
             size, reference = members[start], members[start + 1] if start + 1 < len(members) else None
-            position = ASSEM_HEADER_FIELDS + start
             if _is_word(size, MODULE_MEMBER_LIST) or _is_word(reference, MODULE_MEMBER_LIST):
-                partner = reference if _is_word(size, MODULE_MEMBER_LIST) else size
-                if partner is not None and partner.value is not None:
-                    self.report(BAD_MODULE_MEMBER_LIST, f"{proxy.keyword} fields {position + 1}-{position + 2}: "
-                                f"{MODULE_MEMBER_LIST} stands in place of the whole pair; the other field "
-                                f"shall be empty, not {partner.raw or 'a group'}", self.adapter, partner)
-                    ok = False
-                    continue
                 listed = size if reference is None or _is_word(size, MODULE_MEMBER_LIST) else reference
                 expanded = self._member_list(proxy, proxied, listed)
                 ok = ok and expanded is not None
@@ -455,6 +454,25 @@ class _Merger:
         return self._plain(proxy, proxied, range(len(proxy.fields)))
 
 
+def module_member_list_faults(entry: Entry) -> Iterator[tuple[Field, str]]:
+    """(field, what is wrong) wherever a ProxyAssem's ModuleMemberList does not stand in place of a
+    whole Member Size / Member Reference pair (C.4.1.5.3.2): in fields 1-6, or beside a non-empty field
+    of its pair. ``edsconv lint`` and the merge both report them (EDS406)."""
+    for position, item in enumerate(entry.fields[:ASSEM_HEADER_FIELDS]):
+        if _is_word(item, MODULE_MEMBER_LIST):
+            yield item, f"field {position + 1} is {MODULE_MEMBER_LIST}, which may stand only in place of a member " \
+                        "pair (fields 7, 8 and on, Table C.20)"
+    members = entry.fields[ASSEM_HEADER_FIELDS:]
+    for start in range(0, len(members), 2):
+        size, reference = members[start], members[start + 1] if start + 1 < len(members) else None
+        position = ASSEM_HEADER_FIELDS + start
+        if _is_word(size, MODULE_MEMBER_LIST) or _is_word(reference, MODULE_MEMBER_LIST):
+            partner = reference if _is_word(size, MODULE_MEMBER_LIST) else size
+            if partner is not None and partner.value is not None:
+                yield partner, f"fields {position + 1}-{position + 2}: {MODULE_MEMBER_LIST} stands in place of the " \
+                               f"whole pair; the other field shall be empty, not {partner.raw or 'a group'}"
+
+
 def merge(adapter: EdsFile, modules: list[EdsFile]) -> MergeResult:
     """Combine the adapter's Proxy entries with those of each module whose Rack entries match.
 
@@ -472,7 +490,7 @@ def merge(adapter: EdsFile, modules: list[EdsFile]) -> MergeResult:
             if not racks:
                 module_racks = ", ".join(rack_keys(module)) or "no RackN entry"
                 report(NO_MATCHING_RACK, f"{_name(module)} ({module_racks}) has no Rack entry whose vendor, product "
-                       f"type, product code and revision match a Rack entry of {_name(adapter)}", module)
+                       f"type, product code and major revision match a Rack entry of {_name(adapter)}", module)
                 continue
             sections = _Merger(adapter, module, report).merge()
             if sections:

@@ -320,6 +320,8 @@ XSD_VENDOR_KEYWORD = f"{INSTANCE_NUMBER}_[A-Za-z0-9][A-Za-z0-9_]*"
 
 #: C.4.1.2.2.11: vendor-specific keywords (entries, sections, field keywords).
 VENDOR_KEYWORD_RE = re.compile(r"[1-9][0-9]*_[A-Za-z0-9_]+")
+#: A vendor-specific section keyword: C.4.1.2.2.3 allows single inner spaces in section keywords.
+VENDOR_SECTION_KEYWORD_RE = re.compile(r"[1-9][0-9]*_[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
 #: C.4.1.2.2.3: characters of keywords; a space only inside section keywords.
 KEYWORD_RE = re.compile(r"[A-Za-z0-9_]+")
 SECTION_KEYWORD_RE = re.compile(r"[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
@@ -1091,7 +1093,7 @@ def section_spec(name: str) -> SectionSpec | None:
     name = name.strip().removeprefix("[").removesuffix("]").strip()
     if name in SECTIONS:
         return SECTIONS[name]
-    return VENDOR_SECTION if VENDOR_KEYWORD_RE.fullmatch(name) else None
+    return VENDOR_SECTION if VENDOR_SECTION_KEYWORD_RE.fullmatch(name) else None
 
 
 def split_numbered(keyword: str) -> tuple[str, int | None]:

@@ -24,11 +24,12 @@ class Context:
     eds: EdsFile
     device: Device
 
-    def at(self, rule_: Rule, message: str, node=None) -> Diagnostic:
-        """A diagnostic at a syntax node (anything with line/column), or at the file start."""
+    def at(self, rule_: Rule, message: str, node=None, clause: str = "") -> Diagnostic:
+        """A diagnostic at a syntax node (anything with line/column), or at the file start; ``clause``
+        when this case has a clause of its own (see :meth:`Diagnostic.of`)."""
         line = node.line if node is not None else 1
         column = node.column if node is not None else 1
-        return Diagnostic.of(rule_, message, line, column, self.eds.path)
+        return Diagnostic.of(rule_, message, line, column, self.eds.path, clause=clause)
 
 
 CheckFunction = Callable[[Context], Iterable[Diagnostic]]
@@ -58,7 +59,8 @@ def check(*rules: Rule) -> Callable[[CheckFunction], Check]:
 
 
 #: Every module that defines checks: :func:`load_checks` collects their module-level :class:`Check` objects.
-CHECK_MODULES = ("edsconv.checks.entities", "edsconv.checks.structure", "edsconv.checks.objects")
+CHECK_MODULES = ("edsconv.checks.entities", "edsconv.checks.addressing", "edsconv.checks.structure",
+                 "edsconv.checks.objects")
 
 
 @functools.cache

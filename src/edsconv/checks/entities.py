@@ -9,6 +9,7 @@ reported again here.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from typing import TypeGuard
 
@@ -24,14 +25,16 @@ from edsconv.checks.entity_rules import (
     DUPLICATE_CONNECTION_NAME,
     DUPLICATE_PORT_NUMBER,
     EMPTY_MEMBER,
+    ENUM_NOT_PAIRS,
     ENUM_WITHOUT_DESCRIPTOR_BIT,
     GROUP_MEMBER_COUNT,
     LEGAL_SLOT_OUT_OF_RANGE,
+    MEMBER_FIELDS_ODD,
     MODULE_IN_MEMBER,
     NESTED_ASSEMBLY,
     NO_CLASS_OR_TRIGGER,
-    PACKED_EPATH_MEMBER,
     PARAM_RESERVED_BITS,
+    PARAMCLASS_RESERVED_BITS,
     PARAMETERS_RESERVED_BITS,
     PROXY_CONNECT_NAME_MODULE,
     QUERY_FIELD_VALUE,
@@ -55,14 +58,17 @@ from edsconv.checks.entity_rules import (
 )
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import Entry
+from edsconv.merge import BAD_MODULE_MEMBER_LIST, module_member_list_faults
 from edsconv.model import (
     MODULE,
+    MODULE_MEMBER_LIST,
     Assembly,
     AssemblyMember,
     Connection,
     ConnectionEndpoint,
     Device,
     Parameter,
+    Rack,
     Reference,
 )
 from edsconv.model.build import iter_references
@@ -90,18 +96,37 @@ def _path_references(connection: Connection) -> Iterator[PathItem]:
         yield from (item for item in connection.path if item.reference)
 
 
+def _reference_clause(ref: Reference) -> str:
+    """The clause that says what the field of a reference may name: an assembly member (C.4.1.4.8), a
+    connection field (C.4.1.4.9.4 - .10), the chassis SlotDisplayRule (C.4.1.5.2.2)."""
+    family = tables.split_numbered(ref.entry.keyword)[0] if ref.entry is not None else ""
+    if family in _CONNECTION_FAMILIES and ref.field_index < len(tables.CONNECTION_FIELDS):
+        return tables.CONNECTION_FIELDS[ref.field_index].clause
+    if family == "SlotDisplayRule":
+        return next(spec.clause for spec in tables.MODULAR_ENTRIES if spec.keyword == family)
+    return tables.ASSEM_FIELDS[0].clause
+
+
+_CONNECTION_FAMILIES = frozenset(spec.keyword for spec in tables.SECTIONS["Connection Manager"].entries)
+#: C.4.1.4.9.13: the connection path may name Param / ProxyParam entries.
+_PATH_CLAUSE = tables.CONNECTION_FIELDS[14].clause
+
+
 @check(UNDEFINED_REFERENCE)
 def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
+    """Every reference names a defined entry, but a group member: a GroupN lists Parameter object
+    instances, and C.4.1.4.6 lets an instance go without a ParamN entry."""
+    group_members = {id(member) for group in ctx.device.groups for member in group.members}
     for ref in iter_references(ctx.device):
-        if ref.target is None:
+        if ref.target is None and id(ref) not in group_members:
             where = ref.entry.keyword if ref.entry is not None else "a reference"
             yield ctx.at(UNDEFINED_REFERENCE, f"{where} names {ref.keyword}, which is not defined",
-                         _node(ref.entry, ref.field_index))
+                         _node(ref.entry, ref.field_index), clause=_reference_clause(ref))
     for connection in ctx.device.connections.values():
         for item in _path_references(connection):
             if ctx.device.resolve(item.reference or "") is None:
                 yield ctx.at(UNDEFINED_REFERENCE, f"{connection.keyword}: the path names [{item.reference}], "
-                             "which is not defined", _node(connection.entry, 14))
+                             "which is not defined", _node(connection.entry, 14), clause=_PATH_CLAUSE)
 
 
 #: C.4.1.4.9.4 - .10 and .13: the type a parameter named in a connection field evaluates to.
@@ -127,14 +152,35 @@ def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
                 if data_type is not None and data_type.name not in allowed:
                     yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: {name} names {value.keyword}, a "
                                  f"{data_type.name}; it shall evaluate to {' or '.join(allowed)}",
-                                 _node(connection.entry, index))
+                                 _node(connection.entry, index), clause=tables.CONNECTION_FIELDS[index].clause)
         for item in _path_references(connection):
             target = ctx.device.resolve(item.reference or "")
             if isinstance(target, Parameter) and target.data_type is not None \
                     and target.data_type.name not in _PATH_TYPES:
                 yield ctx.at(WRONG_PARAMETER_TYPE, f"{connection.keyword}: the path names {item.reference}, a "
                              f"{target.data_type.name}; path parameters shall be USINT, UINT or UDINT",
-                             _node(connection.entry, 14))
+                             _node(connection.entry, 14), clause=_PATH_CLAUSE)
+
+
+def _written_count(entry: Entry) -> int:
+    """The number of fields up to the last one that holds a value."""
+    return next((index + 1 for index in range(len(entry.fields) - 1, -1, -1) if entry.fields[index].value is not None),
+                0)
+
+
+@check(ENUM_NOT_PAIRS)
+def enum_pairs(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.6: "Each Enum entry shall consist of pairs of integers and strings"."""
+    for section in ctx.eds.sections:
+        if section.name != "Params":
+            continue
+        for entry in section.entries:
+            spec = tables.entry_spec("Params", entry.keyword)
+            count = _written_count(entry)
+            if spec is not None and spec.fields == tables.ENUM_FIELDS and count % 2:
+                last = entry.fields[count - 1]
+                yield ctx.at(ENUM_NOT_PAIRS, f"{entry.keyword} has {count} fields; its last value {last.raw} has no "
+                             "string", last)
 
 
 @check(UNPAIRED_ENTRY)
@@ -286,9 +332,14 @@ def proxy_connect_names(ctx: Context) -> Iterator[Diagnostic]:
 # --- parameters ------------------------------------------------------------------------
 
 
-@check(PARAM_RESERVED_BITS, ASSEMBLY_RESERVED_BITS)
+@check(PARAM_RESERVED_BITS, ASSEMBLY_RESERVED_BITS, PARAMCLASS_RESERVED_BITS)
 def descriptors(ctx: Context) -> Iterator[Diagnostic]:
-    """Tables C.15 and C.21: reserved descriptor bits shall be 0."""
+    """Tables C.12, C.15 and C.21: reserved descriptor bits shall be 0."""
+    param_class = ctx.device.param_class
+    if param_class is not None:
+        yield from _reserved_bits(ctx, PARAMCLASS_RESERVED_BITS, "[ParamClass] Descriptor", "parameter class "
+                                  "descriptor", param_class.descriptor, tables.PARAMCLASS_DESCRIPTOR_BITS,
+                                  _section_entry(ctx.device, "ParamClass", "Descriptor"))
     for parameter in ctx.device.parameters.values():
         yield from _reserved_bits(ctx, PARAM_RESERVED_BITS, parameter.keyword, "descriptor", parameter.descriptor,
                                   tables.PARAM_DESCRIPTOR_BITS, _node(parameter.entry, 3))
@@ -297,13 +348,20 @@ def descriptors(ctx: Context) -> Iterator[Diagnostic]:
                                   tables.ASSEM_DESCRIPTOR_BITS, _node(assembly.entry, 3))
 
 
+def _type_bounds(data_type: tables.DataType) -> tuple[float | None, float | None]:
+    """The bounds of a data type's values: REAL and LREAL hold -INFINITY and INFINITY too (C.4.1.3.10)."""
+    if data_type.kind == "real":
+        return -math.inf, math.inf
+    return data_type.minimum, data_type.maximum
+
+
 def _bounds(parameter: Parameter, data_type: tables.DataType) -> tuple[float, float] | None:
     """Effective (minimum, maximum) of a numeric parameter of ``data_type``: an absent bound
     is the type's own (Table C.17 note b); None when a bound is unusable."""
+    type_minimum, type_maximum = _type_bounds(data_type)
     entry = parameter.entry
     bounds: list[float] = []
-    for value, index, type_bound in ((parameter.minimum, 9, data_type.minimum), (parameter.maximum, 10,
-                                                                                  data_type.maximum)):
+    for value, index, type_bound in ((parameter.minimum, 9, type_minimum), (parameter.maximum, 10, type_maximum)):
         if _is_number(value):
             bounds.append(value)
         elif not _written(entry, index) and type_bound is not None:
@@ -335,7 +393,8 @@ def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
         if low > high:
             yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: minimum {low} is greater than maximum {high}",
                          _node(parameter.entry, 9))
-        elif _is_number(parameter.default) and not low <= parameter.default <= high:
+        elif _is_number(parameter.default) and not math.isnan(parameter.default) \
+                and not low <= parameter.default <= high:
             yield ctx.at(VALUE_ORDER, f"{parameter.keyword}: default {parameter.default} is outside {low} to {high}",
                          _node(parameter.entry, 11))
 
@@ -383,12 +442,9 @@ def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not _is_int(parameter.descriptor) or not scaling_bit.extract(parameter.descriptor):
             continue  # Figure C.8 writes 0s for scaling that is not used
-        scaling = parameter.scaling
-        for label, value, index in (("multiplier", scaling.multiplier, 12), ("divisor", scaling.divisor, 13),
-                                    ("base", scaling.base, 14)):
-            if value == 0 and _is_int(value):
-                yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling {label} is 0 but the descriptor says "
-                             "scaling is supported", _node(entry, index))
+        if parameter.scaling.divisor == 0 and _is_int(parameter.scaling.divisor):
+            yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling divisor is 0 but the descriptor says scaling "
+                         "is supported; Figure C.5 divides by it", _node(entry, 13))
 
 
 def _expected_data_size(data_type: tables.DataType) -> int | None:
@@ -482,45 +538,40 @@ def _contains(outer: Assembly, wanted: Assembly, seen: set[str]) -> bool:
     return False
 
 
-#: CIP logical segments (segment type 001): bits 0-1 give the value format,
-#: 0 = 8-bit, 1 = 16-bit, 2 = 32-bit; a padded path puts one pad byte before a
-#: 16- or 32-bit value so that every segment is a whole number of 16-bit words.
-_LOGICAL_SEGMENT_TYPE, _SEGMENT_TYPE_MASK = 0x20, 0xE0
-_LOGICAL_VALUE_BYTES = {0: 1, 1: 2, 2: 4}
-
-
-def _packed_segment(path: tuple[PathItem, ...]) -> int | None:
-    """Offset of the first logical segment written in packed form (no pad byte
-    before a 16- or 32-bit value), or None when the path is padded. Walks the
-    leading logical segments only: other segment types (data segments) end it."""
-    data = [item.byte for item in path]
-    offset = 0
-    while offset < len(data) and (segment := data[offset]) is not None \
-            and segment & _SEGMENT_TYPE_MASK == _LOGICAL_SEGMENT_TYPE:
-        value_bytes = _LOGICAL_VALUE_BYTES.get(segment & 0x03)
-        if value_bytes is None:
-            return None  # special logical format (electronic key): not a packing question
-        if value_bytes == 1:
-            offset += 2
-            continue
-        padded_end = offset + 2 + value_bytes
-        if padded_end > len(data) or data[offset + 1] != 0:
-            return offset
-        offset = padded_end
+def _unpaired_member_size(assembly: Assembly) -> int | None:
+    """0-based index of a last Member Size without its Member Reference; a lone ModuleMemberList of a
+    ProxyAssem stands for a whole pair (C.4.1.5.3.2), as the model reads it."""
+    entry = assembly.entry
+    if entry is None:
+        return None
+    index, end = tables.ASSEM_FIELDS[-2].number - 1, len(entry.fields)
+    while index < end:
+        lone = assembly.family == "ProxyAssem" and entry.fields[index].raw == MODULE_MEMBER_LIST
+        if index + 1 == end and not lone:
+            return index if entry.fields[index].value is not None else None  # empty: EDS323
+        index += 1 if lone else 2
     return None
 
 
-@check(PACKED_EPATH_MEMBER)
-def assembly_member_paths(ctx: Context) -> Iterator[Diagnostic]:
+@check(MEMBER_FIELDS_ODD)
+def assembly_member_pairs(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.8: member fields are Member Size / Member Reference pairs, "making the total number of fields
+    even"."""
     for assembly in ctx.device.assemblies.values():
-        for member in assembly.members:
-            if isinstance(member.reference, tuple):
-                offset = _packed_segment(member.reference)
-                if offset is not None:
-                    path = " ".join(str(item) for item in member.reference)
-                    yield ctx.at(PACKED_EPATH_MEMBER, f"{assembly.keyword}: member path \"{path}\" has a 16- or "
-                                 f"32-bit logical segment at byte {offset} without the pad byte; write the padded "
-                                 "EPATH", _node(assembly.entry, member.field_index + 1))
+        index = _unpaired_member_size(assembly)
+        if index is not None:
+            yield ctx.at(MEMBER_FIELDS_ODD, f"{assembly.keyword}: field {index + 1} is a Member Size without a "
+                         "Member Reference; member fields come in pairs", _node(assembly.entry, index))
+
+
+@check(BAD_MODULE_MEMBER_LIST)
+def module_member_lists(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.5.3.2: ModuleMemberList "shall only be used in place of a Member Size and Member Reference
+    field pair"; in the adapter's file alone, as ``edsconv merge`` reports it."""
+    for assembly in ctx.device.assemblies.values():
+        if assembly.family == "ProxyAssem" and assembly.entry is not None:
+            for item, message in module_member_list_faults(assembly.entry):
+                yield ctx.at(BAD_MODULE_MEMBER_LIST, f"{assembly.keyword} {message}", item)
 
 
 @check(SLOT_MASK_PAIR, SLOT_MASK_WITHOUT_SIZE)
@@ -559,9 +610,21 @@ def ports(ctx: Context) -> Iterator[Diagnostic]:
                 first_use[port.port_number] = port.number
 
 
-def _modular_entry(device: Device, keyword: str) -> Entry | None:
-    section = device.eds.section("Modular") if device.eds is not None else None
+def _names_this_device(rack: Rack, device: Device) -> bool:
+    """True when a RackN's electronic key is the device's own: vendor, type, product code and major
+    revision (C.4.1.4.3: the minor revision shall not be used to match an EDS to a device)."""
+    identity = device.identity
+    return rack.key[:4] == (identity.vendor_code, identity.product_type, identity.product_code,
+                            identity.major_revision)
+
+
+def _section_entry(device: Device, section_name: str, keyword: str) -> Entry | None:
+    section = device.eds.section(section_name) if device.eds is not None else None
     return section.entry(keyword) if section is not None else None
+
+
+def _modular_entry(device: Device, keyword: str) -> Entry | None:
+    return _section_entry(device, "Modular", keyword)
 
 
 @check(LEGAL_SLOT_OUT_OF_RANGE, WIDTH_ZERO, QUERY_FIELD_VALUE)
@@ -571,13 +634,16 @@ def modular(ctx: Context) -> Iterator[Diagnostic]:
         return
     slots = modular.define_slots_in_rack
     if _is_int(slots):
-        # A file with both DefineSlotsInRack and RackN describes a chassis with
-        # modules of its own: their legal slots are slots of that chassis.
+        # A file with both DefineSlotsInRack and a RackN naming its own chassis describes
+        # a chassis with modules of its own: their legal slots are slots of that chassis.
         for rack in modular.racks:
+            if not _names_this_device(rack, ctx.device):
+                continue  # another chassis: its slots are its own EDS's matter
             for index, slot in enumerate(rack.legal_slots):
                 if slot >= slots:
                     yield ctx.at(LEGAL_SLOT_OUT_OF_RANGE, f"Rack{rack.number}: legal slot {slot} is beyond the "
-                                 f"{slots} slots (0 to {slots - 1}) of DefineSlotsInRack", _node(rack.entry, 8 + index))
+                                 f"{slots} slots (0 to {slots - 1}) of this chassis (DefineSlotsInRack)",
+                                 _node(rack.entry, 8 + index))
     if modular.width == 0:
         yield ctx.at(WIDTH_ZERO, "Width is 0; a module consumes at least one slot", _modular_entry(ctx.device, "Width"))
     if modular.query is not None:

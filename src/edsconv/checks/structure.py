@@ -21,10 +21,11 @@ from collections.abc import Iterator
 
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
-from edsconv.checks import Context, check
+from edsconv.checks import Context, check, keywords
 from edsconv.checks.structure_rules import (
     FIELDS_BEYOND_2003,
     FORWARD_REFERENCE,
+    ICON_NOT_ICO,
     ICON_WITHOUT_HOME_URL,
     KEYWORD_BEYOND_2003,
     KEYWORD_STARTS_WITH_DIGIT,
@@ -39,24 +40,28 @@ from edsconv.checks.structure_rules import (
     PUBLIC_CLASS_SUBCLASSIFIED,
     REQUIRED_FIELD_EMPTY,
     RESERVED_FIELD_SET,
-    SECTION_BEYOND_2003,
     SECTION_PLACEMENT,
     TOO_MANY_FIELDS,
+    UNKNOWN_KEYWORD,
     VENDOR_ID_LEADING_ZERO,
     VENDOR_SECTION_NOT_LAST,
 )
 from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.eds.syntax import Entry, Field, Scalar, Section, String
 from edsconv.model.build import iter_references
+from edsconv.model.values import CONTROL_CHARACTER, NULL_TERMINATOR, string_flaw
 
 REQUIRED, RESERVED = tables.Presence.REQUIRED, tables.Presence.RESERVED
 
 
-#: A vendor-specific keyword whose vendor ID has leading zeros (``0065_Foo``).
-_ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+")
+#: A vendor-specific keyword whose vendor ID has leading zeros (``0065_Foo``, ``[0065_Foo Data]``).
+_ZERO_PADDED_VENDOR_KEYWORD = re.compile(r"0[0-9]*_[A-Za-z0-9_]+(?: [A-Za-z0-9_]+)*")
 #: C.4.1.5.3: a Proxied entry only supplies the fields its Proxy entry marks "Module";
 #: its other fields are documentation and may be empty, so none is required.
 _PROXIED_FAMILIES = frozenset(spec.keyword for spec in tables.all_entries() if spec.keyword.startswith("Proxied"))
+#: Entries whose repeating tail is as long as a field of theirs says: GroupN lists Number of Members
+#: parameters (Table C.19), which may be none.
+_COUNTED_TAILS = frozenset({"Group"})
 #: A section of DeviceNet EDS files only (CIP Vol 3: the I/O messages of a DeviceNet
 #: slave); those files predate [Device Classification], which Table C.3 leaves optional.
 _DEVICENET_SECTIONS = frozenset({"IO_Info"})
@@ -67,7 +72,8 @@ def _keyword_problem(keyword: str) -> tuple[Rule, str] | None:
     if _ZERO_PADDED_VENDOR_KEYWORD.fullmatch(keyword):
         vendor_id = keyword.partition("_")[0]
         return VENDOR_ID_LEADING_ZERO, f"vendor ID {vendor_id} has leading zeros; write {int(vendor_id)}_..."
-    if keyword[:1].isdigit() and not tables.is_vendor_keyword(keyword):
+    vendor_keyword = tables.VENDOR_SECTION_KEYWORD_RE if " " in keyword else tables.VENDOR_KEYWORD_RE
+    if keyword[:1].isdigit() and not vendor_keyword.fullmatch(keyword):
         return KEYWORD_STARTS_WITH_DIGIT, "a public keyword never starts with a digit and a vendor-specific " \
                                           "one is VendorID_keyword"
     return None
@@ -161,15 +167,44 @@ def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
-@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, SECTION_BEYOND_2003)
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
 def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
     for section in ctx.eds.sections:
         problem = _keyword_problem(section.name)
         if problem is not None:
             yield ctx.at(problem[0], f"section [{section.name}]: {problem[1]}", section)
         elif cip_tables.known(section.name) is None:
-            yield ctx.at(SECTION_BEYOND_2003, f"[{section.name}] is not a section of ISO 15745-4:2003 (kept)",
-                         section)
+            meant = keywords.closest(section.name, keywords.section_names())
+            yield ctx.at(UNKNOWN_KEYWORD, f"[{section.name}] {_UNDEFINED}{_did_you_mean(meant and f'[{meant}]')}",
+                         section, clause="C.4.1.2.2.5")
+
+
+#: What EDS222 says of a keyword no table defines.
+_UNDEFINED = "is defined neither by ISO 15745-4:2003 nor by the newer CIP tables, and is not vendor-specific"
+
+
+def _did_you_mean(keyword: str | None) -> str:
+    return f"; did you mean {keyword}?" if keyword else ""
+
+
+def _reference_places(ctx: Context) -> Iterator[tuple[Entry, int, str, Entry]]:
+    """(entry, 0-based field, what it names, the entry named) of every resolved reference, those
+    inside connection paths included."""
+    for reference in iter_references(ctx.device):
+        target_entry = getattr(reference.target, "entry", None)
+        if reference.entry is not None and target_entry is not None:
+            yield reference.entry, reference.field_index, str(reference), target_entry
+    for connection in ctx.device.connections.values():
+        if connection.entry is None or not isinstance(connection.path, tuple):
+            continue
+        for item in connection.path:
+            target_entry = getattr(ctx.device.resolve(item.reference), "entry", None) if item.reference else None
+            if target_entry is not None:
+                yield connection.entry, _CONNECTION_PATH_FIELD, f"{item} in its path", target_entry
+
+
+#: 0-based index of the Path field of a ConnectionN (Table C.22 field 15).
+_CONNECTION_PATH_FIELD = 14
 
 
 @check(FORWARD_REFERENCE)
@@ -182,18 +217,14 @@ def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     section_of = {id(entry): (index, section) for index, section in enumerate(ctx.eds.sections)
                   for entry in section.entries}
     reported: set[tuple[int, int]] = set()
-    for reference in iter_references(ctx.device):
-        target_entry = getattr(reference.target, "entry", None)
-        if reference.entry is None or target_entry is None:
-            continue
-        source = section_of.get(id(reference.entry))
+    for entry, field_index, named, target_entry in _reference_places(ctx):
+        source = section_of.get(id(entry))
         target = section_of.get(id(target_entry))
         if source is None or target is None or target[0] <= source[0] or (source[0], target[0]) in reported:
             continue
         reported.add((source[0], target[0]))
-        fields = reference.entry.fields
-        node = fields[reference.field_index] if reference.field_index < len(fields) else reference.entry
-        yield ctx.at(FORWARD_REFERENCE, f"{reference.entry.keyword} in [{source[1].name}] refers to {reference} "
+        node = entry.fields[field_index] if field_index < len(entry.fields) else entry
+        yield ctx.at(FORWARD_REFERENCE, f"{entry.keyword} in [{source[1].name}] refers to {named} "
                                         f"of [{target[1].name}], which comes later (line {target_entry.line}); "
                                         f"place [{target[1].name}] before [{source[1].name}]", node)
 
@@ -223,10 +254,39 @@ def required_entries(ctx: Context) -> Iterator[Diagnostic]:
                                         f"{listed} ({where})", sections[0])
 
 
-@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003)
+#: C.4.1.5.2.1: a [Modular] section describes a chassis or a module; these entries show which. A chassis
+#: "shall contain a required keyword DefineSlotsInRack" (C.4.1.5.2.2), a module "the Width and Rack
+#: entries" (C.4.1.5.2.3, Table C.26).
+_CHASSIS_ENTRIES, _MODULE_ENTRIES = ("DefineSlotsInRack", "SlotDisplayRule"), \
+    ("Width", "Rack", "ExternalID", "GenericID", "ExternIDExactMatch", "Query")
+_CHASSIS_REQUIRES, _MODULE_REQUIRES = ("DefineSlotsInRack",), ("Width", "Rack")
+
+
+@check(MISSING_ENTRY)
+def modular_entries(ctx: Context) -> Iterator[Diagnostic]:
+    """The entries a chassis or a module [Modular] section requires; an empty section describes neither."""
+    sections = _sections_by_name(ctx).get("Modular")
+    if not sections:
+        return
+    present = {spec.keyword for section in sections for entry in section.entries
+               if (spec := tables.entry_spec("Modular", entry.keyword)) is not None}
+    for kind, shown_by, required in (("chassis", _CHASSIS_ENTRIES, _CHASSIS_REQUIRES),
+                                     ("module", _MODULE_ENTRIES, _MODULE_REQUIRES)):
+        shown = [keyword for keyword in shown_by if keyword in present]
+        missing = [keyword for keyword in required if keyword not in present]
+        if shown and missing:
+            clause = next(spec.clause for spec in tables.MODULAR_ENTRIES if spec.keyword == required[0])
+            listed = ", ".join(f"{keyword}N" if keyword == "Rack" else keyword for keyword in missing)
+            yield ctx.at(MISSING_ENTRY, f"[Modular] describes a {kind} ({', '.join(shown)}) but lacks the required "
+                                        f"entr{'ies' if len(missing) > 1 else 'y'} {listed} ({clause})", sections[0],
+                         clause=clause)
+
+
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003, UNKNOWN_KEYWORD)
 def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Entry keywords: vendor IDs without leading zeros, no public keyword with a leading
-    digit, and keywords the 2003 text does not define (kept, reported as information)."""
+    digit, keywords the 2003 text does not define in their section (kept, reported as
+    information) and keywords no table defines (a warning)."""
     for section in ctx.eds.sections:
         spec = tables.SECTIONS.get(section.name)
         newer = spec is None and cip_tables.section_spec(section.name) is not None
@@ -235,17 +295,21 @@ def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
             if problem is not None:
                 yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
             elif (spec is not None or newer) and cip_tables.known(section.name, entry.keyword) is None:
-                why = _why_undefined(spec, entry.keyword) if spec is not None else \
-                    f"is not an entry of [{section.name}] in the newer CIP tables"
-                yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {why} (kept)", entry)
+                if tables.entries_named(entry.keyword) or keywords.newer_entry(section.name, entry.keyword):
+                    yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(section.name, entry.keyword)} "
+                                                      "(kept)", entry)
+                else:
+                    meant = keywords.closest(entry.keyword, *keywords.entry_keywords(section.name))
+                    yield ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} in [{section.name}] {_UNDEFINED}"
+                                                  f"{_did_you_mean(meant)}", entry, clause="C.4.1.2.2.9")
 
 
-def _why_undefined(section: tables.SectionSpec, keyword: str) -> str:
-    # the keyword the 2003 text reserves for future [Assembly] entry types (VariantN) the newer tables define
+def _why_undefined(section: str, keyword: str) -> str:
+    """Where the 2003 text or the newer tables define a keyword that ``[section]`` does not hold."""
     elsewhere = sorted({spec.section for spec in tables.entries_named(keyword)})
     if elsewhere:
-        return f"is defined by ISO 15745-4:2003 for [{'], ['.join(elsewhere)}], not for [{section.name}]"
-    return f"is not an entry of [{section.name}] in ISO 15745-4:2003 or the newer CIP tables"
+        return f"is defined by ISO 15745-4:2003 for [{'], ['.join(elsewhere)}], not for [{section}]"
+    return f"is defined by the newer CIP tables for other sections, not for [{section}]"
 
 
 @check(NUMBERING)
@@ -264,8 +328,8 @@ def numbering(ctx: Context) -> Iterator[Diagnostic]:
                 if number != expected:
                     entry = entries[number]
                     yield ctx.at(NUMBERING, f"{entry.keyword} comes where {spec.keyword}{expected} is expected: "
-                                            f"{spec.keyword}N entries are numbered from 1 without gaps "
-                                            f"({spec.clause})", entry)
+                                            f"{spec.keyword}N entries are numbered from 1 without gaps",
+                         entry, clause=spec.clause)
                 expected = number + 1
 
 
@@ -278,8 +342,10 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
     for entry, spec in _specified_entries(ctx):
         missing = []
         for required in spec.fields:
-            if required.presence is not REQUIRED or required.repeats or spec.keyword in _PROXIED_FAMILIES:
+            if required.presence is not REQUIRED or spec.keyword in _PROXIED_FAMILIES:
                 continue
+            if required.repeats and (spec.keyword in _COUNTED_TAILS or required is not spec.repeating[0]):
+                continue  # a required repeating tail needs its first field (a RackN one Legal Slot)
             index = required.number - 1
             if index >= len(entry.fields):
                 missing.append(f"{required.number} ({required.name})")
@@ -299,20 +365,27 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
                                                  f"defines {spec.max_fields} (later fields kept)", extra)
         for index, item in enumerate(entry.fields):
             field_spec = spec.field_at(index + 1)
-            if field_spec is not None and field_spec.presence is RESERVED and item.value is not None:
+            if field_spec is not None and field_spec.presence is RESERVED and item.value is not None \
+                    and item.raw != tables.MODULE_MEMBER_LIST_KEYWORD:  # EDS406 says what is wrong with it
                 yield ctx.at(RESERVED_FIELD_SET, f"{entry.keyword} field {index + 1} is reserved and shall be "
                                                  f"empty (Table {field_spec.table}); {item.raw or 'its value'} "
                                                  f"is ignored", item)
 
 
-@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003)
+#: (entry family, field number) of fields whose value a rule of their own checks, so that one fault has
+#: one code: the Port Type Name (EDS333) and the Query service (EDS336).
+_OWN_RULE_FIELDS = frozenset({("Port", 1), ("Query", 2)})
+
+
+@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
     for entry, spec in _specified_entries(ctx):
         for index, item in enumerate(entry.fields):
             field_spec = spec.field_at(index + 1)
             word = _word(item)
-            if field_spec is None or word is None or word in spec.proxy_keywords:
+            if field_spec is None or word is None or word in spec.proxy_keywords \
+                    or (spec.keyword, index + 1) in _OWN_RULE_FIELDS:
                 continue
             is_keyword_field = "Keyword" in field_spec.alternatives
             problem = _keyword_problem(word) if is_keyword_field and isinstance(item.value, Scalar) else None
@@ -336,14 +409,25 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
                   item: Field) -> Diagnostic:
     allowed = ", ".join(str(choice) for choice in field_spec.choices)
     if field_spec.vendor_keywords and isinstance(item.value, Scalar) and tables.KEYWORD_RE.fullmatch(word):
-        # An open list (vendors may add keywords): later CIP editions add public
-        # ones too, such as the Safety classification.
-        return ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} field {index + 1}: {word} is not a "
-                                           f"{field_spec.name} of ISO 15745-4:2003 ({allowed} or VendorID_keyword; "
-                                           f"kept)", item)
+        # An open list (vendors may add keywords); the public ones later CIP editions add, such as
+        # the Safety classification, are cip_tables.known_choice and not reported
+        meant = keywords.closest(word, keywords.classification_keywords())
+        return ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
+                                       f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)
     vendor = " or a VendorID_keyword" if field_spec.vendor_keywords else ""
     return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {word!r}; allowed: "
                                 f"{allowed}{vendor}", item)
+
+
+@check(CONTROL_CHARACTER, NULL_TERMINATOR)
+def string_characters(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.3.2 and C.4.1.3.3.1: no control characters and no null terminator, in every string of the file."""
+    for section in ctx.eds.sections:
+        for entry in section.entries:
+            for item in entry.walk_fields():
+                flaw = string_flaw(item.value) if isinstance(item.value, String) else None
+                if flaw is not None:
+                    yield ctx.at(flaw[0], f"{entry.keyword}: {flaw[1]}", item)
 
 
 # --- classification, identity, file description ---------------------------------------
@@ -396,15 +480,22 @@ def _when(moment: tuple) -> str:
     return f"{date.isoformat()} {time.isoformat()}" if time is not None else date.isoformat()
 
 
-@check(ICON_WITHOUT_HOME_URL)
-def icon_needs_home_url(ctx: Context) -> Iterator[Diagnostic]:
-    """Table C.9: the icon's location is HomeURL's folder, so Icon "shall only be present when a HomeURL exists"."""
+@check(ICON_WITHOUT_HOME_URL, ICON_NOT_ICO)
+def icon(ctx: Context) -> Iterator[Diagnostic]:
+    """Table C.9: the icon's location is HomeURL's folder, so Icon "shall only be present when a HomeURL
+    exists"; the file "shall have the *.ICO MSWindows format"."""
     device_section = ctx.eds.section("Device")
-    icon = device_section.entry("Icon") if device_section is not None else None
+    icon_entry = device_section.entry("Icon") if device_section is not None else None
+    if icon_entry is None:
+        return
     file_section = ctx.eds.section("File")
-    if icon is not None and (file_section is None or file_section.entry("HomeURL") is None):
+    if file_section is None or file_section.entry("HomeURL") is None:
         yield ctx.at(ICON_WITHOUT_HOME_URL, "Icon names a file relative to HomeURL, but [File] has no HomeURL",
-                     icon)
+                     icon_entry)
+    name = ctx.device.identity.icon
+    if isinstance(name, str) and not name.strip().lower().endswith(".ico"):
+        yield ctx.at(ICON_NOT_ICO, f"Icon {name!r} does not end in .ico; the icon file shall have the MS Windows "
+                                   "ICO format", icon_entry.fields[0] if icon_entry.fields else icon_entry)
 
 
 @check(NO_TCP_PORT)
@@ -413,6 +504,9 @@ def ethernetip_port(ctx: Context) -> Iterator[Diagnostic]:
     port_section = ctx.eds.section("Port")
     if port_section is None or not ctx.device.is_ethernetip or not ctx.device.ports:
         return
+    if any(isinstance(port.type_name, str) and port.type_name not in tables.PORT_TYPE_KEYWORDS
+           and not tables.is_vendor_keyword(port.type_name) for port in ctx.device.ports):
+        return  # a misspelt port type (EDS333) may be the TCP port: one fault, one code
     if not any(port.type_name == tables.ETHERNETIP_PORT_TYPE for port in ctx.device.ports):
         types = ", ".join(sorted({port.type_name for port in ctx.device.ports if port.type_name})) or "none"
         yield ctx.at(NO_TCP_PORT, f"the device is classified EtherNetIP but no PortN has the port type "

@@ -56,13 +56,16 @@ VENDOR_SECTION_NOT_LAST = rule(
     good="`[Params]` first, `[65535_Extra]` after it.",
 )
 FORWARD_REFERENCE = rule(
-    "EDS204", WARNING, "C.4.1.2.1", "An entry refers to an entry of a section placed later",
+    "EDS204", ERROR, "C.4.1.2.1", "An entry refers to an entry of a section placed later",
     explanation="""
         Optional sections may be in any order "provided that no forward references
         exist": an entry names an entry of a section that comes later in the file
-        (a connection naming an assembly or parameter, an assembly member naming a
-        parameter, a group naming a parameter). The message gives both lines. Reported
-        once per pair of sections: moving the referenced section up fixes them all.
+        (a connection naming an assembly or parameter in a field or inside its path, an
+        assembly member naming a parameter, a group naming a parameter). The message
+        gives both lines. Reported once per pair of sections: moving the referenced
+        section up fixes them all. An error, as the text's "shall": the one real file of
+        61 that breaks it is a hand-written library demo, so no tool practice argues
+        for less.
     """,
     bad=block("""
         [Connection Manager]
@@ -94,13 +97,18 @@ NOT_ETHERNETIP = rule(
 )
 MISSING_ENTRY = rule(
     "EDS206", ERROR, "C.4.1.4", "A section lacks an entry the spec requires",
-    clause_note="Tables C.6, C.8, C.10; C.4.1.4.4",
+    clause_note="Tables C.6, C.8, C.10; C.4.1.4.4; C.4.1.5.2.2, C.4.1.5.2.3",
     explanation="""
         A section lacks an entry its table marks Required: `DescText`, `CreateDate`,
         `CreateTime`, `Revision` in `[File]`; `VendCode`, `VendName`, `ProdType`,
         `ProdTypeStr`, `ProdCode`, `MajRev`, `MinRev`, `ProdName` in `[Device]`; the
         three entries of `[ParamClass]`; a `ClassN` in `[Device Classification]`.
-        One diagnostic per section, at its header, names every missing entry.
+        A `[Modular]` section that describes a chassis (it has `DefineSlotsInRack` or
+        `SlotDisplayRule`) requires `DefineSlotsInRack` (C.4.1.5.2.2); one that describes
+        a module (`Width`, `RackN`, `ExternalID`, `GenericID`, `ExternIDExactMatch` or
+        `Query`) requires `Width` and a `RackN` (C.4.1.5.2.3): `edsconv merge` matches
+        files by their Rack entries. One diagnostic per section (per kind for
+        `[Modular]`), at its header, names every missing entry and cites its clause.
     """,
     bad=block("""
         [File]
@@ -116,7 +124,9 @@ REQUIRED_FIELD_EMPTY = rule(
     explanation="""
         A field the entry's table marks Required is empty, or the entry ends before it.
         Every entry with a layout in the spec is checked (ParamN field 1, 4-9, 12;
-        ConnectionN fields 1, 2, 13-15; PortN fields 1 and 4 ...). A string that is
+        ConnectionN fields 1, 2, 13-15; PortN fields 1 and 4; a RackN's first Legal
+        Slot, field 9, since a module fits at least one slot; the first value of an
+        EnumN ...). A GroupN may list no parameter: its Number of Members says how many. A string that is
         empty by meaning is written `""`, not left out. ProxiedParamN, ProxiedAssemN and
         ProxiedConnectN are exempt: they only supply the fields their Proxy entry marks
         `Module` (C.4.1.5.3).
@@ -167,7 +177,11 @@ RESERVED_FIELD_SET = rule(
     explanation="""
         A reserved field is not empty: fields 5 and 6 of `AssemN` and `PortN`, fields
         6-8 of `RackN`. Tools ignore the value. In an `AssemN` it often means the
-        member pairs start two fields too early.
+        member pairs start two fields too early (a `ModuleMemberList` there is EDS406). A
+        warning, not an error: Table C.20 and
+        C.26 say "shall be empty" (Table C.25 only "Not Used"), but 8 of the 61 real files
+        write 0 in a PortN's field 5 (OpENer-based files and the ifm AL1322), and tools
+        ignore it.
     """,
     bad=block("""
                 Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1, 0x00;
@@ -181,9 +195,10 @@ NOT_A_CHOICE = rule(
     explanation="""
         A field limited to a list of keywords or values holds another one:
         `ExternIDExactMatch` is `Yes` or `No`, `ExcludeFromAdapterRackConnection` is
-        `"Yes"` or `"No"`, ParamN field 1 is `0`, the Query service is 1 or 14. The open
-        keyword lists (the first field of `ClassN` and `PortN`, which vendors may
-        extend) get EDS219 instead.
+        `"Yes"` or `"No"`, ParamN field 1 is `0`. The open keyword list of the first
+        field of `ClassN`, which vendors and later editions extend, gets EDS219 or
+        EDS222 instead; the Port Type Name and the Query service have rules of their
+        own (EDS333, EDS336), so that one fault has one code.
     """,
     bad=block("""
         [Modular]
@@ -211,13 +226,16 @@ PUBLIC_CLASS_SUBCLASSIFIED = rule(
     """),
 )
 NUMBERING = rule(
-    "EDS213", WARNING, "C.4.1.4.4",
+    "EDS213", ERROR, "C.4.1.4.4",
     "ClassN, GroupN, ConnectionN or RackN entries are not numbered 1, 2, 3 ... without gaps",
     clause_note="and C.4.1.4.7, C.4.1.4.9, C.4.1.5.2.3",
     explanation="""
         `ClassN`, `GroupN`, `ConnectionN` and `RackN` entries are numbered from 1 and
         incremented by one; a number is missing or the first is not 1. Reported at the
-        entry after the gap. (`ProxyConnect`/`ProxiedConnect` numbers are free.)
+        entry after the gap, with the clause of its family (C.4.1.4.4 ClassN, C.4.1.4.7
+        GroupN, C.4.1.4.9.1 ConnectionN, C.4.1.5.2.3 RackN). `ProxyConnect`/`ProxiedConnect`
+        numbers are free. An error, as the text's "shall": none of the 61 real files of
+        the test corpus breaks it.
     """,
     bad=block("""
                 Class1 = EtherNetIP;
@@ -247,7 +265,8 @@ MODIFIED_BEFORE_CREATED = rule(
     "EDS215", WARNING, "C.4.1.4.2", "The last modification is dated before the creation",
     explanation="""
         The last modification (`ModDate`, with `ModTime` when both times are given) is
-        before the creation (`CreateDate`, `CreateTime`).
+        before the creation (`CreateDate`, `CreateTime`). No clause forbids it in so many
+        words, so a warning: it is most likely a slip in one of the dates.
     """,
     bad=block("""
                 CreateDate = 01-02-2020;
@@ -257,11 +276,13 @@ MODIFIED_BEFORE_CREATED = rule(
     good="`ModDate = 01-02-2020;` or later.",
 )
 ICON_WITHOUT_HOME_URL = rule(
-    "EDS216", WARNING, "C.4.1.4.3", "Icon is present without a HomeURL in [File]",
+    "EDS216", ERROR, "C.4.1.4.3", "Icon is present without a HomeURL in [File]",
     clause_note="Table C.9",
     explanation="""
         `Icon` names a file relative to the folder of `HomeURL`, and "shall only be
-        present when a HomeURL keyword exists"; `[File]` has no `HomeURL`.
+        present when a HomeURL keyword exists"; `[File]` has no `HomeURL`. An error, as
+        the text's "shall": of the 47 real files with an `Icon`, one lacks `HomeURL`, and
+        that one was rewritten by a library, not by a vendor's tool.
     """,
     bad=block("""
         [Device]
@@ -298,41 +319,32 @@ KEYWORD_STARTS_WITH_DIGIT = rule(
     """),
 )
 KEYWORD_BEYOND_2003 = rule(
-    "EDS219", INFO, "C.4.1.2.2.9", "A keyword defined neither by ISO 15745-4:2003 nor by the newer CIP tables (kept)",
+    "EDS219", INFO, "C.4.1.2.2.9", "A keyword defined for other sections than the one it stands in (kept)",
     explanation="""
         An entry keyword that neither ISO 15745-4:2003 nor the tables of later CIP editions
-        (edsconv.cip_tables: `IconContents`, `AssemExaN`, the object-class entries ...)
-        define for its section, or a first field of `ClassN`/`PortN` outside both lists.
-        Vendor-specific keywords (`65535_Note`) are not reported. edsconv keeps the entry
-        as it is.
+        (edsconv.cip_tables) define for its section, but that one of them defines for
+        another: `MaxInst` in `[Params]` (the 2003 text's is in `[ParamClass]`; keywords
+        are global in scope, C.4.1.2.2.8), `MaxInst` in `[Capacity]` (the newer tables'
+        is an object-class entry). edsconv keeps the entry as it is. What the tables
+        define in its section (`IconContents` in `[Device]`, `AssemExaN` in `[Assembly]`,
+        the object-class entries) is not reported; a keyword no table defines is EDS222.
     """,
     bad=block("""
-        [Device]
-                IconContent = "...";            $ IconContents misspelt
+        [Params]
+                MaxInst = 4;
     """),
-    good="`IconContents`, and vendor-specific keywords (`65535_IconData`).",
-    labels=("Example", "Not reported"),
-)
-SECTION_BEYOND_2003 = rule(
-    "EDS220", INFO, "C.4.1.2.2.5", "A section defined neither by ISO 15745-4:2003 nor by the newer CIP tables (kept)",
-    explanation="""
-        A section that neither ISO 15745-4:2003 nor the tables of later CIP editions define
-        (those hold `[Capacity]`, the object class sections such as `[TCP/IP Interface
-        Class]` and `[DLR Class]`, DeviceNet's `[IO_Info]` ...), and that is not
-        vendor-specific (`[65535_Tool]`, `[Class940_Vendor1]`). Kept as it is.
-    """,
-    bad=block("""
-        [Diagnostics Extra]
-                MaxIOConnections = 4;
-    """),
-    good="`[Capacity]`, `[65535_Capacity]`.",
+    good="`MaxInst = 4;` in `[ParamClass]`, and vendor-specific keywords (`65535_MaxInst`).",
     labels=("Example", "Not reported"),
 )
 NO_TCP_PORT = rule(
-    "EDS221", WARNING, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port",
+    "EDS221", ERROR, "C.4.2.2.2", "The [Port] section of an EtherNet/IP device has no TCP port",
     explanation="""
         The device is classified `EtherNetIP` and has a `[Port]` section, but no `PortN`
-        has the port type `TCP`, the type of an EtherNet/IP port.
+        has the port type `TCP`: "the PortN entry corresponding to an EtherNet/IP
+        compliant port shall" have the Port Type Name `TCP` (C.4.2.2.2), and every CIP
+        routable port has an entry (C.4.1.4.10). An error, as the text's "shall": none of
+        the 61 real files breaks it. Not reported when a port type is misspelt (EDS333):
+        that port may be the TCP one.
     """,
     bad=block("""
         [Port]
@@ -343,4 +355,54 @@ NO_TCP_PORT = rule(
                 Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 1;
                 Port2 = DeviceNet, "DeviceNet", "20 03 24 01", 2;
     """),
+)
+UNKNOWN_KEYWORD = rule(
+    "EDS222", WARNING, "C.4.1.2.2.10",
+    "A keyword that neither ISO 15745-4:2003 nor the newer CIP tables define, and that is not vendor-specific",
+    clause_note="C.4.1.2.2.5 sections, C.4.1.2.2.9 entries, C.4.1.4.4 classifications",
+    explanation="""
+        A section keyword, entry keyword or classification keyword that no table edsconv
+        holds defines, and that is not vendor-specific (`VendorID_keyword`): not the
+        2003 text's (Table C.3, the entry tables, C.4.1.4.4) and not one that later CIP
+        editions added ([Capacity], `IconContents`, `Safety` ...; `edsconv.cip_tables`).
+        A public keyword "shall always be defined within the CIP specification"
+        (C.4.1.2.2.10), so this is most likely a misspelling: tools ignore the entry or
+        section, and what it says is lost. When a defined keyword is close, the message
+        offers it ("did you mean").
+
+        A warning, not an error: later CIP editions define keywords edsconv's tables may
+        not hold yet. Keywords the tables hold beyond the 2003 text are not reported (the
+        EDS5xx rules check them); one they define for another section is EDS219
+        (information). The Port Type Name has its own rule (EDS333).
+    """,
+    bad=block("""
+        [Device]
+                Catalogue = "PRB-1";            $ did you mean Catalog?
+        [Connection Manger]                     $ did you mean [Connection Manager]?
+        [Params]
+                Parameter1 = ...;               $ did you mean Param1?
+    """),
+    good=block("""
+        [Device]
+                Catalog = "PRB-1";
+                65535_Catalogue = "PRB-1";      $ vendor-specific
+    """),
+    aliases={"EDS220": """
+        EDS220 was "a section not defined by ISO 15745-4:2003" (information) until issue 10
+        phase 2: the sections later CIP editions define are now modelled and checked
+        (EDS5xx), and a section no table defines is EDS222, so configurations that name
+        EDS220 keep working. Selecting or ignoring EDS220 acts on all of EDS222.
+    """},
+)
+ICON_NOT_ICO = rule(
+    "EDS223", WARNING, "C.4.1.4.3", "The Icon file name does not end in .ico",
+    clause_note="Table C.9",
+    explanation="""
+        The icon file "shall have the *.ICO MSWindows format" (Table C.9); the name in
+        `Icon` does not end in `.ico` (in any case). A warning, not an error: the text
+        constrains the file's format, which the EDS does not hold, and a name is only a
+        strong sign of it. (All 47 real files with an `Icon` name an `.ico` file.)
+    """,
+    bad='`Icon = "adapter.png";`',
+    good='`Icon = "adapter.ico";`',
 )

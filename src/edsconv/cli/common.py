@@ -42,6 +42,15 @@ class CannotRun(click.ClickException):
         click.echo(self.message, err=True)
 
 
+class Interrupted(BaseException):
+    """A signal (SIGINT, SIGTERM, SIGHUP) ends the command: a BaseException, so that no handler of
+    ``Exception`` stops it and every ``finally`` block runs."""
+
+    def __init__(self, signal_number: int) -> None:
+        super().__init__(signal_number)
+        self.signal_number = signal_number
+
+
 @contextmanager
 def reading(path: object | None = None) -> Iterator[None]:
     """``path: cannot read: reason`` for an OSError inside (the file the error names when no path is given)."""
@@ -53,14 +62,16 @@ def reading(path: object | None = None) -> Iterator[None]:
 
 
 @contextmanager
-def writing(path: object) -> Iterator[None]:
-    """``path: cannot write: reason`` for an OSError inside; a refusal to overwrite says itself why."""
+def writing(path: object | None = None) -> Iterator[None]:
+    """``path: cannot write: reason`` for an OSError inside (the file the error names, else ``path``);
+    a refusal to overwrite says itself why."""
     try:
         yield
     except OSError as error:
         if isinstance(error, FileExistsError) and error.errno is None:  # write_atomically without force
             raise CannotRun(str(error)) from error
-        raise CannotRun(f"{path}: cannot write: {error.strerror or error}") from error
+        named = error.filename if error.filename is not None else path
+        raise CannotRun(f"{named}: cannot write: {error.strerror or error}") from error
 
 
 def read_eds(path: Path) -> EdsFile:

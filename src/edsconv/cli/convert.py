@@ -13,6 +13,7 @@ from typing import Any
 
 import click
 
+from edsconv.atomic import write_all_atomically, write_atomically
 from edsconv.cli.common import (
     EXIT_FINDINGS,
     CannotRun,
@@ -25,10 +26,12 @@ from edsconv.cli.common import (
 )
 from edsconv.diagnostics import Severity
 from edsconv.model import Device
-from edsconv.xml.common import Header, InvalidProfile, write_atomically
+from edsconv.xml.common import Header, InvalidProfile
 from edsconv.xml.convert import (
     WRAPPER_REFERENCES,
+    NotConverted,
     Output,
+    conversion_refusals,
     device_from_profiles,
     header_for,
     profile_documents,
@@ -52,15 +55,41 @@ from edsconv.xml.convert import (
               help="ProfileDate YYYY-MM-DD (default: [File] ModDate, else CreateDate).")
 def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: str, force: bool,
                     **overrides: Any) -> int:
-    """Convert an EDS into ISO 15745-4 XML profiles (device + communication network)."""
+    """Convert an EDS into ISO 15745-4 XML profiles (device + communication network).
+
+    \b
+    Writes, in the output directory (STEM: EDS_FILE's name without its extension):
+      STEM_device.xml and STEM_commnet.xml
+      with --wrapper: STEM_device_wrapper.xml and STEM_commnet_wrapper.xml
+    Both files or neither: nothing is written when one cannot be.
+
+    An EDS whose text or values cannot all be read (syntax or value errors), or
+    whose [Device] lacks VendCode, ProdType, ProdCode, MajRev or MinRev, is not
+    converted (XML103): the profiles would lose or invent data.
+
+    \b
+    Exit status:
+      0  converted, no errors
+      1  converted but the checks found errors, or not converted (XML103)
+      2  could not run: unreadable input, a file that cannot be written,
+         existing files without --force, a bad option
+    """
     from edsconv import analyse
 
-    device, diagnostics = analyse(read_eds(eds_file))
+    eds = read_eds(eds_file)
+    device, diagnostics = analyse(eds)
     echo_diagnostics((d for d in diagnostics if d.severity is Severity.ERROR), err=True)
     if isinstance(overrides["date"], datetime.datetime):
         overrides["date"] = overrides["date"].date()
     header = header_for(device, eds_file.stem, overrides)
-    outputs = _documents(eds_file, device, header, WRAPPER_REFERENCES[reference] if wrapper else None)
+    try:
+        refusals = conversion_refusals(eds, device)
+        if refusals:
+            raise NotConverted(refusals)
+        outputs = _documents(eds_file, device, header, WRAPPER_REFERENCES[reference] if wrapper else None)
+    except NotConverted as refused:
+        echo_diagnostics(refused.diagnostics, err=True)
+        return EXIT_FINDINGS
     for target in _write_all(output_dir, outputs, force):
         click.echo(str(target))
     return exit_status(diagnostics)
@@ -77,14 +106,11 @@ def _documents(eds_file: Path, device: Device, header: Header, wrapper_reference
 
 
 def _write_all(output_dir: Path, outputs: list[Output], force: bool) -> list[Path]:
-    """Write every document, or none when one exists and ``force`` is not given."""
+    """Write every document or none (none when one exists and ``force`` is not given)."""
     targets = [output_dir / output.name for output in outputs]
-    existing = [str(t) for t in targets if t.exists()]
-    if existing and not force:
-        raise CannotRun(f"not overwriting {', '.join(existing)} (use --force)")
-    for target, output in zip(targets, outputs, strict=True):
-        with writing(target):
-            write_atomically(target, output.data, force=True)
+    with writing(output_dir):  # an error names the file it is about
+        write_all_atomically([(target, output.data) for target, output in zip(targets, outputs, strict=True)],
+                             force=force)
     return targets
 
 

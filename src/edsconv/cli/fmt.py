@@ -3,17 +3,15 @@
 from __future__ import annotations
 
 import difflib
-import os
-import stat
 from pathlib import Path
 
 import click
 
+from edsconv.atomic import write_atomically
 from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE, CannotRun, documentation, reading, writing
 from edsconv.eds.canonical import format_bytes
 from edsconv.eds.reader import load
 from edsconv.eds.syntax import EdsFile
-from edsconv.xml.common import write_atomically
 
 #: what became of one file
 CHANGED, UNCHANGED, NOT_FORMATTED = "changed", "unchanged", "not formatted"
@@ -41,7 +39,9 @@ def fmt_command(files: tuple[Path, ...], check: bool, show_diff: bool) -> int:
     verb = "would be reformatted" if check or show_diff else "reformatted"
     changed = sum(outcome == CHANGED for outcome, _ in outcomes)
     unchanged = sum(outcome == UNCHANGED for outcome, _ in outcomes)
-    click.echo(f"{changed} file(s) {verb}, {unchanged} unchanged", err=True)
+    failed = len(outcomes) - changed - unchanged
+    click.echo(f"{changed} file(s) {verb}, {unchanged} unchanged" + (f", {failed} not formatted" if failed else ""),
+               err=True)
     return max((code for _, code in outcomes), default=EXIT_CLEAN)
 
 
@@ -64,9 +64,7 @@ def format_file(path: Path, write: bool, show_diff: bool) -> tuple[str, int]:
         click.echo(f"would reformat {path}", err=True)
         return CHANGED, EXIT_FINDINGS
     with writing(path):
-        mode = path.stat().st_mode
         write_atomically(path, data, force=True)
-        os.chmod(path, stat.S_IMODE(mode))
     click.echo(f"reformatted {path}", err=True)
     return CHANGED, EXIT_CLEAN
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from edsconv.cli.common import EXIT_CLEAN, counts_line, documentation, exit_status, rule_codes
+from edsconv.cli.common import EXIT_CLEAN, CannotRun, counts_line, documentation, exit_status, rule_codes
 from edsconv.lint import lint_paths, promote_warnings
 from edsconv.report import FORMATTERS, FileReport
 
@@ -28,9 +28,11 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
                  warnings_as_errors: bool, jobs: int | None) -> int:
     """Check EDS files, and directories recursively for *.eds/*.EDS files.
 
-    Exit status: 0 no errors, 1 errors found, 2 could not run.
+    Exit status: 0 no errors, 1 errors found, 2 could not run (a path without any EDS file too).
     """
     reports = lint_paths(paths, select, ignore, jobs)
+    if not reports:  # a CI job pointed at the wrong folder must not pass
+        raise CannotRun(f"no EDS file (*.eds) found in {', '.join(str(p) for p in paths)}; nothing checked")
     if warnings_as_errors:
         promote_warnings(reports)
     sys.stdout.write(FORMATTERS[output_format](reports))
@@ -42,8 +44,6 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
 
 def summary(reports: list[FileReport]) -> str:
     """The last line of the text output: files, diagnostics by severity, files that could not be checked."""
-    if not reports:
-        return "no EDS files found"
     failed = sum(r.error is not None for r in reports)
     line = counts_line(f"{len(reports)} file{'s' if len(reports) != 1 else ''}",
                        (d for r in reports for d in r.diagnostics))

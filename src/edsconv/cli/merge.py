@@ -6,9 +6,9 @@ from pathlib import Path
 
 import click
 
+from edsconv.atomic import write_atomically
 from edsconv.cli.common import documentation, echo_diagnostics, exit_status, read_eds, writing
 from edsconv.merge import merge
-from edsconv.xml.common import write_atomically
 
 
 @click.command("merge", epilog=documentation("merge.md"))

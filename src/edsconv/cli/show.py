@@ -72,7 +72,7 @@ def _write_icon(file: Path, data: bytes | None, target: Path) -> None:
     """The decoded IconContents to ``target``, whatever the bytes are (show says what they are)."""
     if data is None:
         raise CannotRun(f"{file}: no icon to write: IconContents is missing or not base64")
-    from edsconv.xml.common import write_atomically
+    from edsconv.atomic import write_atomically
 
     with writing(target):
         write_atomically(target, data, force=True)

@@ -363,9 +363,10 @@ def device_to_eds(device: Device) -> EdsFile:
 
 
 def attach_comments(eds: EdsFile, notes: Iterable[CommentNote]) -> None:
-    """Put each CommentNote back on its section / entry / field. A note whose field is
-    gone goes to the entry's last field; one whose entry is gone to its section's
-    leading comments; one whose section is gone to the end of the file."""
+    """Put each CommentNote back on its section / entry / field. A note on a trailing
+    empty field the entry dropped brings that field back (empty), so the comment stays
+    with the field it describes; one whose entry is gone goes to its section's leading
+    comments; one whose section is gone to the end of the file."""
     sections: dict[str, Section] = {}
     entries: dict[tuple[str, str], Entry] = {}
     for each_section in eds.sections:
@@ -386,7 +387,8 @@ def attach_comments(eds: EdsFile, notes: Iterable[CommentNote]) -> None:
         elif note.field is None:
             entry.comments.append(comment)
         else:
-            entry.fields[min(note.field, len(entry.fields) - 1)].comments.append(comment)
+            entry.fields.extend(Field(None) for _ in range(note.field + 1 - len(entry.fields)))
+            entry.fields[note.field].comments.append(comment)
 
 
 __all__ = ["attach_comments", "device_to_eds", "hex_text", "needs_unicode", "path_text", "plain_value", "quote",

@@ -12,6 +12,7 @@ import functools
 import hashlib
 import json
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -98,3 +99,18 @@ def scalar_kind(raw: str) -> str:
     """
     match = lexicon().scalar_kind.fullmatch(raw)
     return (match.lastgroup or "") if match else ""
+
+
+_BACKSLASH_PAIR = re.compile(r"\\.")
+
+
+def undefined_escapes(raw: str, unicode: bool) -> Iterator[tuple[int, str, bool]]:
+    """(offset in ``raw``, sequence, defined) of each escape of a string's spelling that is not
+    valid there: not in Table C.4 (``defined`` False), or ``\\u`` outside an ``L"..."`` string
+    (C.4.1.3.3.5)."""
+    escape = lexicon().escape
+    for found in _BACKSLASH_PAIR.finditer(raw):
+        if not escape.match(raw, found.start()):
+            yield found.start(), found.group(), False
+        elif found.group() == "\\u" and not unicode:
+            yield found.start(), found.group(), True

@@ -22,7 +22,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Rule
-from edsconv.eds.lexicon import grammar_text, lexicon
+from edsconv.eds.lexicon import grammar_text, lexicon, undefined_escapes
 from edsconv.eds.reader_rules import (
     BAD_ESCAPE,
     CANOPEN_EDS,
@@ -287,14 +287,13 @@ class _Builder(Transformer):
         return String(tuple(parts))
 
     def check_escapes(self, raw: str, offset: int, unicode: bool) -> None:
-        for escape in re.finditer(r"\\.", raw):
-            at = offset + escape.start()
-            if not self.lexicon.escape.match(raw, escape.start()):
-                self.report(BAD_ESCAPE, f"escape sequence {escape.group()!r} is not defined in Table C.4; the "
-                            "string is rejected (write '\\\\' for a backslash)", at)
-            elif escape.group() == "\\u" and not unicode:
+        for at, sequence, defined in undefined_escapes(raw, unicode):
+            if not defined:
+                self.report(BAD_ESCAPE, f"escape sequence {sequence!r} is not defined in Table C.4; the "
+                            "string is rejected (write '\\\\' for a backslash)", offset + at)
+            else:
                 self.report(UNICODE_ESCAPE_IN_ASCII, "\\u escapes are valid only in L\"...\" (UNICODE) "
-                            "strings", at)
+                            "strings", offset + at)
 
     # --- after the parse -----------------------------------------------------------
     def attach_comments(self) -> None:
@@ -410,8 +409,10 @@ def _parse_with_recovery(lark: Lark, builder: _Builder, text: str) -> None:
 
     def on_error(error: UnexpectedInput) -> bool:
         """Insert a missing ';' and go on; otherwise keep what is complete and give up."""
+        accepted = error.interactive_parser.accepts() if isinstance(error, UnexpectedToken) else set()
         if not (isinstance(error, UnexpectedToken) and error.token.type in ("ENTRY_START", "SECTION", "$END")
-                and "SEMICOLON" in error.interactive_parser.accepts()):
+                and "SEMICOLON" in accepted):
+            error.accepted = accepted  # type: ignore[attr-defined]  # for the message: the reduction spends the parser
             _reduce_complete_statements(error)
             return False
         stack = error.interactive_parser.parser_state.value_stack
@@ -488,8 +489,10 @@ def _error_message(error: UnexpectedInput, text: str, position: int) -> tuple[Ru
     if error.token.type == "RUN" and "SEMICOLON" in error.expected:
         return MISSING_COMMA, f"a ',' is missing before {_describe(error.token)}"
     # accepts() asks the parser state itself; ``expected`` is blurred by LALR's merged states.
-    expected = _expected(error.interactive_parser.accepts())
-    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {expected}"
+    accepted = getattr(error, "accepted", None)
+    if accepted is None:
+        accepted = error.interactive_parser.accepts()
+    return SYNTAX_ERROR, f"unexpected {_describe(error.token)}: expected {_expected(accepted)}"
 
 
 def _starts_statement(error: UnexpectedInput) -> bool:

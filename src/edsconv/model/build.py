@@ -127,14 +127,17 @@ class _Builder:
         self.diagnostics = self.device.diagnostics
         self.enums: list[tuple[str, Entry]] = []
         self.size_adders: list[Entry] = []
+        self.section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
 
     # --- diagnostics and field conversion --------------------------------------------
-    def report(self, rule_, message: str, node) -> None:
-        self.diagnostics.append(Diagnostic.of(rule_, message, node.line, node.column, self.eds.path))
+    def report(self, rule_, message: str, node, clause: str = "") -> None:
+        self.diagnostics.append(Diagnostic.of(rule_, message, node.line, node.column, self.eds.path, clause=clause))
 
     def value(self, entry: Entry, index: int, type_name: str, *, proxy: bool = False) -> Any:
         """Field ``index`` (0-based) of ``entry`` converted to ``type_name``; None when
-        empty or not convertible (then a diagnostic says why)."""
+        empty or without a reading (then a diagnostic says why). A value that breaks a
+        rule but has one reading is returned, and marked erroneous when the rule is an
+        error (:attr:`Device.erroneous`)."""
         if index >= len(entry.fields):
             return None
         field = entry.fields[index]
@@ -142,12 +145,15 @@ class _Builder:
             return None
         try:
             return self.convert(field.value, type_name, proxy, entry, index)
-        except ValueNote as note:
-            self.report(note.rule, f"{entry.keyword} field {index + 1}: {note.message}", field)
-            return note.value
         except ValueProblem as problem:
-            self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field)
-            return None
+            if not problem.reported:
+                self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field,
+                            problem.clause)
+            if not isinstance(problem, ValueNote):
+                return None
+            if problem.rule.severity is Severity.ERROR:
+                self.device.erroneous[(self.section_of[id(entry)], entry.keyword, index)] = problem.rule.code
+            return problem.value
 
     def convert(self, value: Value, type_name: str, proxy: bool, entry: Entry, index: int) -> Any:
         plan = _plan(type_name)
@@ -347,6 +353,11 @@ class _Builder:
             if proxy and isinstance(first, Scalar) and first.raw == MODULE_MEMBER_LIST:
                 assembly.module_member_list = True
                 index += 1
+                continue
+            second = entry.fields[index + 1].value if index + 1 < len(entry.fields) else None
+            if proxy and isinstance(second, Scalar) and second.raw == MODULE_MEMBER_LIST:
+                assembly.module_member_list = True  # ",ModuleMemberList" (Figure C.15): the pair is the module's
+                index += 2
                 continue
             size = self.value(entry, index, "UINT")
             target = entry.fields[index + 1].value if index + 1 < len(entry.fields) else None

@@ -43,7 +43,7 @@ from edsconv.model.cip import (
 )
 from edsconv.model.device import Assembly, AssemblyMember, Device, GenericEntry, Reference
 from edsconv.model.icon import decode_icon
-from edsconv.model.values import HEX_TOO_LONG, OUT_OF_RANGE, WRONG_KIND, ValueProblem, convert
+from edsconv.model.values import HEX_TOO_LONG, OUT_OF_RANGE, WRONG_KIND, ValueNote, ValueProblem, convert
 
 #: A written value as GenericEntry keeps it: a Scalar, a String, None, or a list for a brace group.
 Written = Any
@@ -86,7 +86,8 @@ def _plan(eds_type: str) -> _Plan:
 def read_field(value: Written, field_spec: tables.FieldSpec) -> Any:
     """A written field value as the Python value of the first of its FieldSpec's types it fits;
     None for an empty field. ValueProblem when it fits none: the notation or range problem of the
-    type it was written as, else WRONG_KIND."""
+    type it was written as, else WRONG_KIND; a ValueNote (with the one reading) when that problem
+    leaves the value one reading (leading zeros, too many hex digits), as the values policy says."""
     if value is None:
         return None
     plan = _plan(field_spec.eds_type)
@@ -105,6 +106,10 @@ def read_field(value: Written, field_spec: tables.FieldSpec) -> Any:
     for kind in plan.values:
         try:
             return convert(value, kind)
+        except ValueNote as note:
+            if note.reported:
+                return note.value  # a string flaw: the check of every string reports it (EDS116, EDS117)
+            found.append(note)
         except ValueProblem as problem:
             found.append(problem)
     relevant = next((p for p in found if p.rule is not WRONG_KIND), None)
@@ -338,11 +343,14 @@ def _io_reference(family: str, number: Any) -> Reference | None:
 
 
 def reading(value: Written, field_spec: tables.FieldSpec | None) -> tuple[Any, ValueProblem | None]:
-    """A field read by its spec: (value, None), or (None, why it does not fit); (None, None) without a spec."""
+    """A field read by its spec: (value, None), or (value or None, why it does not fit: a value when the
+    breach leaves one reading); (None, None) without a spec."""
     if field_spec is None:
         return None, None
     try:
         return read_field(value, field_spec), None
+    except ValueNote as note:
+        return note.value, note  # one reading: kept, and reported (EDS501 / EDS502)
     except ValueProblem as problem:
         return None, problem
 

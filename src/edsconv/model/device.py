@@ -6,8 +6,16 @@ builds the same model. Every object keeps the syntax ``entry`` it came from
 stay reachable. Values are Python values: ``int``, ``float``, ``str``,
 ``datetime.date``/``time``, :class:`~edsconv.model.values.Revision`, paths as tuples
 of :class:`~edsconv.model.values.PathItem`, references as :class:`Reference`.
-A field whose value could not be converted is None (a diagnostic says why);
-a field that a Proxy entry defers to its Proxied entry holds :data:`MODULE`.
+A field whose value has no reading is None (a diagnostic says why); a field
+that a Proxy entry defers to its Proxied entry holds :data:`MODULE`.
+
+The values policy: a value that breaks a notation rule of C.4.1.3 keeps its
+place in the model when the text allows exactly one reading of it
+(``ProdCode = 06402;`` is 6402, ``MinRev = 02;`` is 2, ``06-6-2001`` is June 6):
+the diagnostic stands, and :attr:`Device.erroneous` marks the field. Where no
+reading exists the field is None: a number outside its type (a BOOL default
+255), a date that is no day of the calendar, a string rejected for an escape
+sequence Table C.4 does not define (C.4.1.3.3.5: "reject the entire string").
 """
 
 from __future__ import annotations
@@ -487,6 +495,9 @@ class Device:
     extra_entries: dict[str, list[GenericEntry]] = field(default_factory=dict)
     #: sections the 2003 text does not define, in file order
     other_sections: list[GenericSection] = field(default_factory=list)
+    #: fields whose value breaks a notation rule (an error) but has one reading, which the model
+    #: holds: (section, entry keyword, 0-based field index) -> the code of the rule it breaks
+    erroneous: dict[tuple[str, str, int], str] = field(default_factory=dict, compare=False, repr=False)
     # --- the same content beyond the 2003 text, typed (model.cip, built by model.cip_build.attach from
     # extra_entries and other_sections, which the writers write): derived from those, so not compared
     #: [Capacity]

@@ -1,5 +1,6 @@
 """What the XML writers and readers share: the extension namespace, the profile
-header, serialisation that validates before it writes, and atomic output.
+header, and serialisation that validates before it writes (files are written by
+:mod:`edsconv.atomic`).
 
 ISO 15745-4 profiles have no target namespace; what the schemas do not model
 (sections and keywords the 2003 text does not define, comments) goes into the
@@ -10,11 +11,8 @@ schemas' ``xsd:any`` extension points as elements of :data:`EDSCONV_NAMESPACE`
 from __future__ import annotations
 
 import datetime
-import os
 import re
-import tempfile
 from dataclasses import dataclass
-from pathlib import Path
 
 from lxml import etree
 
@@ -160,22 +158,3 @@ def serialise(root: etree._Element, schema_kind: str) -> bytes:
     if problems:
         raise InvalidProfile(schema_kind, problems)
     return data
-
-
-def write_atomically(path: Path, data: bytes, *, force: bool = False) -> None:
-    """Write ``data`` to ``path`` through a temporary file in the same directory.
-
-    Readers never see a half-written file. Raises FileExistsError when the
-    file exists and ``force`` is false.
-    """
-    if path.exists() and not force:
-        raise FileExistsError(f"{path} exists (use --force to overwrite it)")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    descriptor, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(descriptor, "wb") as stream:
-            stream.write(data)
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise

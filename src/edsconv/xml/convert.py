@@ -18,9 +18,11 @@ from pathlib import Path
 
 from lxml import etree
 
-from edsconv.diagnostics import Diagnostic, Severity, has_errors, rule
+from edsconv.diagnostics import Diagnostic, Severity, block, has_errors, rule
+from edsconv.eds.syntax import EdsFile
 from edsconv.model import Device
-from edsconv.xml.common import Header, header_element, serialise
+from edsconv.xml.common import Header, header_element, is_xml_text, serialise
+from edsconv.xml.safe import XmlError, parse_xml
 
 WRAPPER_NOT_FOUND = rule(
     "XML101", Severity.ERROR, "C.2.2.1", "The EDS a wrapper profile references is not next to it",
@@ -45,6 +47,54 @@ NOT_A_PROFILE = rule(
     good="`edsconv xml2eds adapter_device.xml adapter_commnet.xml`",
 )
 
+NOT_CONVERTED = rule(
+    "XML103", Severity.ERROR, "C.2.1", "eds2xml does not convert an EDS whose identity or values it cannot read",
+    explanation="""
+        eds2xml writes profiles only when they say what the EDS says. It writes
+        nothing (exit 1) when:
+
+        - the reader reported an error (text that does not follow the EDS syntax,
+          EDS0xx) or a value could not be read (out of range, wrong kind, a bad
+          date ..., EDS1xx): the profiles would lose that text or show a placeholder
+          in place of the value (a 500-digit VendCode would become `0`);
+        - [Device] does not give VendCode, ProdType, ProdCode, MajRev and MinRev: the
+          profile's identity (ProfileIdentification, DeviceIdentity) would be invented;
+        - a section name holds characters XML 1.0 cannot carry (control characters):
+          the profiles name sections in attributes;
+        - the profile would not be readable by an XML parser with the usual limits
+          (edsconv's own reader included): a value or comment longer than 10 MB,
+          or a document larger than 64 MiB.
+
+        Errors of the checks (EDS2xx to EDS4xx: a missing reference, sizes that do
+        not add up ...) do not stop the conversion: the values are read, and the
+        profiles carry them as the EDS writes them. Correct the file and convert again.
+    """,
+    bad=block("""
+        [Device]
+            VendCode = 99999999999999999999;
+    """, "ini"),
+    good=block("""
+        [Device]
+            VendCode = 65535;
+            ProdType = 12;
+            ProdCode = 1001;
+            MajRev = 1;
+            MinRev = 2;
+    """, "ini"),
+)
+#: The [Device] entries the profile's identity is made of (ProfileIdentification, ProdRevision).
+IDENTITY = (("VendCode", "vendor_code"), ("ProdType", "product_type"), ("ProdCode", "product_code"),
+            ("MajRev", "major_revision"), ("MinRev", "minor_revision"))
+
+
+class NotConverted(Exception):
+    """The EDS cannot be converted without losing or inventing data; ``diagnostics`` say why."""
+
+    def __init__(self, diagnostics: list[Diagnostic]) -> None:
+        super().__init__("; ".join(d.message for d in diagnostics))
+        self.diagnostics = diagnostics
+
+
 #: Table C.2: WrapperReference values, by the --reference option.
 WRAPPER_REFERENCES = {"fileinfo": "FILEINFO", "deviceinfo": "DEVICEINFO"}
 
@@ -59,13 +109,53 @@ class Output:
 
 # --- eds2xml -----------------------------------------------------------------------------
 
+def conversion_refusals(eds: EdsFile, device: Device) -> list[Diagnostic]:
+    """Why ``eds`` must not be converted (rule XML103): errors of reading, or an identity it does not give."""
+    unread = [d for d in (*eds.diagnostics, *device.diagnostics) if d.severity is Severity.ERROR]
+    refusals = []
+    if unread:
+        first = unread[0]
+        refusals.append(Diagnostic.of(
+            NOT_CONVERTED, f"not converted: the profiles would lose what {len(unread)} error(s) could not read "
+            f"(the first: {first.code} at line {first.line})", first.line, first.column, eds.path))
+    for section in eds.sections:
+        if not is_xml_text(section.name):
+            refusals.append(Diagnostic.of(
+                NOT_CONVERTED, f"not converted: the section name {section.name!r} holds characters XML 1.0 cannot "
+                "carry (control characters)", section.line, section.column, eds.path))
+    missing = [keyword for keyword, attribute in IDENTITY if not isinstance(getattr(device.identity, attribute), int)]
+    if missing:
+        device_section = next((s for s in eds.sections if s.name == "Device"), None)
+        line, column = (device_section.line, device_section.column) if device_section else (1, 1)
+        refusals.append(Diagnostic.of(
+            NOT_CONVERTED, f"not converted: [Device] gives no readable {', '.join(missing)}, which the profiles' "
+            "identity is made of", line, column, eds.path))
+    return refusals
+
+
 def profile_documents(device: Device, header: Header, stem: str) -> list[Output]:
-    """The device and communication network profiles, validated."""
+    """The device and communication network profiles, validated and readable by :func:`parse_xml`."""
     from edsconv.xml.commnet import commnet_profile
     from edsconv.xml.device_write import device_profile
 
-    return [Output(f"{stem}_device.xml", serialise(device_profile(device, header), "cip-device")),
-            Output(f"{stem}_commnet.xml", serialise(commnet_profile(device, header), "ethernetip-commnet"))]
+    return [readable_document(f"{stem}_device.xml", device_profile(device, header), "cip-device", device),
+            readable_document(f"{stem}_commnet.xml", commnet_profile(device, header), "ethernetip-commnet", device)]
+
+
+def readable_document(name: str, root: etree._Element, kind: str, device: Device) -> Output:
+    """The validated document (:func:`serialise`) when edsconv's reader reads it back, else
+    :class:`NotConverted`: the writer never produces what the reader cannot read."""
+    try:
+        data = serialise(root, kind)
+        parse_xml(data)
+    except (etree.XMLSyntaxError, XmlError) as error:  # serialise may re-parse the document
+        reason = error.message if isinstance(error, XmlError) else error.msg
+        path = device.eds.path if device.eds is not None else None
+        raise NotConverted([Diagnostic.of(
+            NOT_CONVERTED, f"not converted: {name} would not be readable by XML parsers ({reason.split(',')[0]}): "
+            "a value or comment longer than 10 MB, or a profile larger than 64 MiB, cannot stand in a profile",
+            1, 1, path)]) from error
+    return Output(name, data)
 
 
 def wrapper_handle(device: Device, reference: str) -> etree._Element:
@@ -96,7 +186,7 @@ def wrapper_documents(device: Device, header: Header, stem: str, reference: str)
             etree.SubElement(body, "DeviceFunction")  # required, content optional (C.2.2.2)
         body.append(wrapper_handle(device, reference))
         name = f"{stem}_device_wrapper.xml" if class_id == "Device" else f"{stem}_commnet_wrapper.xml"
-        outputs.append(Output(name, serialise(root, kind)))
+        outputs.append(readable_document(name, root, kind, device))
     return outputs
 
 
@@ -149,7 +239,7 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
     from edsconv import build, load
     from edsconv.xml.commnet import read_commnet_profile
     from edsconv.xml.device_read import read_device_profile
-    from edsconv.xml.validate import read_and_validate
+    from edsconv.xml.validate import kind_title, read_and_validate
 
     device = Device()
     diagnostics: list[Diagnostic] = []
@@ -173,7 +263,8 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
             diagnostics.extend(eds.diagnostics)
             return build(eds), diagnostics
         else:
-            diagnostics.append(Diagnostic.of(NOT_A_PROFILE, f"a {kind or 'unknown'} profile is not an EtherNet/IP "
-                                             "device, network or EDS wrapper profile", 1, 1, str(path)))
+            what = kind_title(report.kind) if report.kind else "a profile of unknown kind"
+            diagnostics.append(Diagnostic.of(NOT_A_PROFILE, f"not an EtherNet/IP device, network or EDS wrapper "
+                                             f"profile: {what}", 1, 1, str(path)))
             return None, diagnostics
     return device, diagnostics

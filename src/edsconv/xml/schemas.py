@@ -59,7 +59,11 @@ PROFILE_KINDS: tuple[ProfileKind, ...] = (
     ProfileKind("adsnet-commnet", "CommunicationNetwork", "ADS-net_CommNet_Profile.xsd", "A.3.3"),
     ProfileKind("flnet-device", "Device", "FL-net_Device_Profile.xsd", "B.1.5"),
     ProfileKind("flnet-commnet", "CommunicationNetwork", "FL-net_CommNet_Profile.xsd", "B.2.4.5"),
-    ProfileKind("powerlink-xdd", "", None, "ISO 15745-1 container"),
+    # ISO 15745 families recognised but not validated (edsconv holds no schema): xml/validate.py FAMILIES
+    ProfileKind("powerlink-xdd", "", None, "EPSG DS 311"),
+    ProfileKind("canopen-xdd", "", None, "CiA 311"),
+    ProfileKind("profinet-gsdml", "Device", None, "GSDML"),
+    ProfileKind("iolink-iodd", "Device", None, "IODD"),
 )
 
 _BY_NAME = {kind.name: kind for kind in PROFILE_KINDS}

@@ -88,10 +88,14 @@ UNKNOWN_KIND = rule(
 )
 NOT_VALIDATED = rule(
     "XML005", Severity.INFO, "ISO 15745-1",
-    "A recognised ISO 15745 container (POWERLINK XDD) for which edsconv has no schema",
+    "A recognised ISO 15745 profile of another family (POWERLINK, CANopen, GSDML, IODD), not validated",
     explanation="""
-        A recognised ISO 15745 container, a POWERLINK XDD (`ISO15745ProfileContainer`),
-        for which edsconv has no schema: it is reported and not validated.
+        The file is an ISO 15745 profile of a family edsconv recognises but holds no
+        schema for, so it is named and not validated: a POWERLINK XDD/XDC or a CANopen
+        XDD/XDC (CiA 311; `ISO15745ProfileContainer`), a PROFINET GSDML
+        (`ISO15745Profile`) or an IO-Link IODD (`IODevice`). The family is read from
+        the root element's namespace and the header's ProfileTechnology; when the two
+        name different families the file is not recognised (XML004).
     """,
     bad=block("""
         <ISO15745ProfileContainer xmlns="http://www.ethernet-powerlink.org">...</ISO15745ProfileContainer>
@@ -111,7 +115,42 @@ TOO_LARGE = rule(
     good="any profile under 64 MiB.",
 )
 
-POWERLINK_XDD = kind_named("powerlink-xdd")
+NOT_CHECKABLE = rule(
+    "XML007", Severity.ERROR, "ISO 15745-4", "A value lies beyond what the schema validator can check",
+    explanation="""
+        The schema validator (xmlschema) failed on a value it cannot represent, such as a
+        date whose year has 40 digits (xs:date sets no bound, the validator does). The
+        rest of the file is not validated, so the file is not taken as valid: xml2eds
+        does not convert it. Real profiles never come near these limits.
+    """,
+    bad="`<ProfileDate>20242024202420242024202420242024-06-03</ProfileDate>`",
+    good="`<ProfileDate>2024-06-03</ProfileDate>`",
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Family:
+    """An ISO 15745 family edsconv recognises but does not validate (no schema)."""
+
+    kind: str
+    #: what the messages call it
+    title: str
+    root: str
+    #: the start of the root element's namespace, as the family's published files declare it
+    namespace: str
+    #: ProfileTechnology in lower case
+    technology: str
+
+
+FAMILIES = (
+    Family("powerlink-xdd", "POWERLINK device description (XDD/XDC)", "ISO15745ProfileContainer",
+           "http://www.ethernet-powerlink.org", "powerlink"),
+    Family("canopen-xdd", "CANopen device description (XDD/XDC, CiA 311)", "ISO15745ProfileContainer",
+           "http://www.canopen.org/xml/", "canopen"),
+    Family("profinet-gsdml", "PROFINET GSDML device description", "ISO15745Profile",
+           "http://www.profibus.com/GSDML/", "gsdml"),
+    Family("iolink-iodd", "IO-Link device description (IODD)", "IODevice", "http://www.io-link.com/IODD/", "iodd"),
+)
 
 # (ProfileClassID, ProfileTechnology in lower case) -> kind. CIP and EtherNet/IP
 # both lead to the CIP schemas; each fixes its own technology, so a profile
@@ -128,6 +167,9 @@ _KIND_BY_HEADER = {
     ("Device", "fl-net"): "flnet-device",
     ("CommunicationNetwork", "fl-net"): "flnet-commnet",
 }
+
+
+_CIP_TECHNOLOGIES = {technology for _, technology in _KIND_BY_HEADER}
 
 
 @dataclass(slots=True)
@@ -152,16 +194,46 @@ def _header_text(root: etree._Element, *steps: str) -> str:
 
 
 def detect_kind(root: etree._Element) -> ProfileKind | None:
-    """The profile kind the document's root and header declare, or ``None``."""
-    root_name = etree.QName(root).localname
-    if root_name == "ISO15745ProfileContainer":
-        return POWERLINK_XDD
-    if root_name != "ISO15745Profile":
+    """The profile kind the document's root and header declare, or ``None``.
+
+    Another family (:data:`FAMILIES`) is named when its root element holds its namespace or
+    its ProfileTechnology, and neither names a different family.
+    """
+    family = detect_family(root)
+    if family is not None:
+        return kind_named(family.kind)
+    if etree.QName(root).localname != "ISO15745Profile" or _family_hints(root) != (None, None):
         return None
     profile_class = _header_text(root, "ProfileHeader", "ProfileClassID")
-    technology = _header_text(root, "ProfileHeader", "ISO15745Reference", "ProfileTechnology").lower()
-    name = _KIND_BY_HEADER.get((profile_class, technology))
+    name = _KIND_BY_HEADER.get((profile_class, _technology(root)))
     return kind_named(name) if name else None
+
+
+def detect_family(root: etree._Element) -> Family | None:
+    """The family of :data:`FAMILIES` the document belongs to, or ``None``."""
+    by_namespace, by_technology = _family_hints(root)
+    if by_namespace is not None and by_technology is not by_namespace and (
+            by_technology is not None or _technology(root) in _CIP_TECHNOLOGIES):
+        return None  # the namespace and the header name different families
+    family = by_namespace or by_technology
+    return family if family is not None and family.root == etree.QName(root).localname else None
+
+
+def _family_hints(root: etree._Element) -> tuple[Family | None, Family | None]:
+    """The families the root element's namespace and the (first) header's ProfileTechnology name."""
+    namespace = etree.QName(root).namespace or ""
+    technology = _technology(root)
+    return (next((f for f in FAMILIES if namespace.startswith(f.namespace)), None),
+            next((f for f in FAMILIES if technology == f.technology), None))
+
+
+def _technology(root: etree._Element) -> str:
+    return _header_text(root, *_header_steps(root), "ISO15745Reference", "ProfileTechnology").lower()
+
+
+def kind_title(kind: ProfileKind) -> str:
+    """What messages call a kind: the family's name, or ``<kind> profile``."""
+    return next((f.title for f in FAMILIES if f.kind == kind.name), f"{kind.name} profile")
 
 
 def validate_file(path: Path, forced: ProfileKind | None = None) -> FileReport:
@@ -181,32 +253,50 @@ def read_and_validate(path: Path, forced: ProfileKind | None = None) -> tuple[Xm
     root = document.tree.getroot()
     report.kind = forced or detect_kind(root)
     if report.kind is None:
-        found = (f"ProfileClassID {_header_text(root, 'ProfileHeader', 'ProfileClassID')!r}, ProfileTechnology "
-                 f"{_header_text(root, 'ProfileHeader', 'ISO15745Reference', 'ProfileTechnology')!r}")
         report.diagnostics.append(Diagnostic.of(
-            UNKNOWN_KIND, f"unknown profile kind ({found}); choose a schema with --schema",
+            UNKNOWN_KIND, f"unknown profile kind ({_what_it_says(root)}); choose a schema with --schema",
             *document.position(root), report.path))
     elif report.kind.xsd is None:
         report.diagnostics.append(Diagnostic.of(
-            NOT_VALIDATED, "POWERLINK XDD profile container recognised; not validated (no schema for it)",
+            NOT_VALIDATED, f"{kind_title(report.kind)} recognised; not validated (edsconv holds no schema for it)",
             *document.position(root), report.path))
     else:
         report.diagnostics.extend(_schema_diagnostics(document, report.kind, report.path))
     return document, report
 
 
+def _what_it_says(root: etree._Element) -> str:
+    """The header values a kind is detected from, the root element and its namespace."""
+    header, qname = _header_steps(root), etree.QName(root)
+    said = (f"ProfileClassID {_header_text(root, *header, 'ProfileClassID')!r}, ProfileTechnology "
+            f"{_header_text(root, *header, 'ISO15745Reference', 'ProfileTechnology')!r}")
+    if qname.localname == "ISO15745Profile" and not qname.namespace:
+        return said
+    return f"{said}; root {qname.localname}" + (f" in namespace {qname.namespace}" if qname.namespace else "")
+
+
+def _header_steps(root: etree._Element) -> tuple[str, ...]:
+    """The path to the (first) ProfileHeader: a container holds it in its first profile."""
+    container = etree.QName(root).localname == "ISO15745ProfileContainer"
+    return ("ISO15745Profile", "ProfileHeader") if container else ("ProfileHeader",)
+
+
 _XML_ERROR_RULES = {XmlSyntaxError: NOT_WELL_FORMED, UnsafeXmlError: UNSAFE_XML, XmlTooLargeError: TOO_LARGE}
 
 
 def _schema_diagnostics(document: XmlDocument, kind: ProfileKind, path: str) -> Iterable[Diagnostic]:
-    for error in load_schema(kind.xsd or "").iter_errors(document.tree):
-        # the document is an lxml tree, so are the elements xmlschema reports
-        element = cast(etree._Element, error.elem)
-        line, column = document.position(element) if element is not None else (0, 0)
-        reason = (error.reason or error.message).strip().rstrip(".")
-        diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column, path)
-        diagnostic.clause = f"ISO 15745-4 {kind.clause}"
-        yield diagnostic
+    try:
+        for error in load_schema(kind.xsd or "").iter_errors(document.tree):
+            # the document is an lxml tree, so are the elements xmlschema reports
+            element = cast(etree._Element, error.elem)
+            line, column = document.position(element) if element is not None else (0, 0)
+            reason = (error.reason or error.message).strip().rstrip(".")
+            diagnostic = Diagnostic.of(SCHEMA_VIOLATION, f"{reason} (at {error.path or '/'})", line, column, path)
+            diagnostic.clause = f"ISO 15745-4 {kind.clause}"
+            yield diagnostic
+    except (ArithmeticError, ValueError) as failure:  # xmlschema raises, e.g. for a date of year 10**40
+        yield Diagnostic.of(NOT_CHECKABLE, f"a value lies beyond what the validator can check ({failure}); the "
+                            "rest of the file is not validated", *document.position(document.tree.getroot()), path)
 
 
 #: The names ``--schema`` accepts: a profile kind or the file name of its schema.

@@ -1,0 +1,67 @@
+"""Which keywords are defined, by the 2003 text or by the newer CIP tables, and the closest one to a word.
+
+C.4.1.2.2.10: a public keyword is one the CIP specification defines. edsconv holds the 2003 text's
+keywords (:mod:`edsconv.spec_tables`) and those later editions added that real files and eds-pie
+show (:mod:`edsconv.cip_tables`); a keyword in neither, that is not vendor-specific, is unknown
+(EDS222), and :func:`closest` finds what it was probably meant to be. Whether a section or keyword is
+known is :func:`edsconv.cip_tables.known`'s answer; this module adds where else a keyword is defined
+and the keywords a misspelling is compared with.
+"""
+
+from __future__ import annotations
+
+import difflib
+import functools
+from collections.abc import Iterable
+
+from edsconv import cip_tables
+from edsconv import spec_tables as tables
+
+#: How alike a word and a keyword must be (difflib's ratio) to be offered as "did you mean"; a word
+#: that begins a keyword (``Conn`` of ``Connection``) is offered however short it is.
+_LIKENESS = 0.6
+
+
+def newer_entry(section: str, keyword: str) -> bool:
+    """True when the newer tables define ``keyword`` in ``section``, or in any section (keywords are
+    global in scope, C.4.1.2.2.8); the 2003 text's entries are looked up in spec_tables."""
+    return cip_tables.entry_spec(section, keyword) is not None or any(
+        tables.find_entry(spec.entries, keyword) is not None for spec in cip_tables.all_sections())
+
+
+@functools.cache
+def section_names() -> tuple[str, ...]:
+    return tuple(dict.fromkeys((*tables.SECTIONS, *cip_tables.CIP_SECTIONS)))
+
+
+@functools.cache
+def entry_keywords(section: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(keywords, numbered families) the 2003 text and the newer tables define in ``section``."""
+    specs = [*tables.SECTIONS[section].entries] if section in tables.SECTIONS else []
+    newer = cip_tables.section_spec(section)
+    specs += newer.entries if newer is not None else ()
+    return (tuple(name for spec in specs if not spec.numbered for name in (spec.keyword, *spec.aliases)),
+            tuple(spec.keyword for spec in specs if spec.numbered))
+
+
+def classification_keywords() -> tuple[str, ...]:
+    return (*tables.CLASSIFICATION_KEYWORDS, *cip_tables.CLASSIFICATION_KEYWORDS_NEWER)
+
+
+def closest(word: str, keywords: Iterable[str], families: Iterable[str] = ()) -> str | None:
+    """The defined keyword ``word`` most likely stands for: ``Parameter5`` -> ``Param5`` (a numbered
+    family keeps the number), ``Catalogue`` -> ``Catalog``; None when none is alike enough."""
+    prefix, number = tables.split_numbered(word)
+    if number is not None:
+        family = _alike(prefix, families)
+        if family is not None:
+            return f"{family}{number}"
+    return _alike(word, keywords)
+
+
+def _alike(word: str, candidates: Iterable[str]) -> str | None:
+    by_lower = {candidate.lower(): candidate for candidate in candidates}
+    lowered = word.lower()
+    found = difflib.get_close_matches(lowered, list(by_lower), n=1, cutoff=_LIKENESS)
+    found = found or sorted((c for c in by_lower if len(lowered) > 2 and c.startswith(lowered)), key=len)[:1]
+    return by_lower[found[0]] if found else None

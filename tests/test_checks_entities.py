@@ -100,7 +100,7 @@ CASES = {
                eds(assembly=[ASSEM_IN, 'Assem101 = "Pad","",,,,,8,;'])),
     "EDS326": (eds(assembly=[ASSEM_IN, 'Assem101 = "Outer","",4,,,,,Assem100;' + M]),
                eds(assembly=[ASSEM_IN, 'Assem101 = "Outer","",4,,,,,Param1;'])),
-    "EDS327": (eds(assembly=['Assem100 = "In","",4,,,,32,Assem100;' + M]),
+    "EDS327": (eds(assembly=['Assem100 = "In","",8,,,,32,Param1,32,Assem100;' + M]),
                eds(assembly=[ASSEM_IN, 'Assem101 = "Outer","",4,,,,32,Assem100;'])),
     "EDS328": (eds(connections=[connection(mark=M).replace("24 64 2C 64", "25 64 00 2C 64")]),
                eds(connections=[connection().replace("24 64 2C 64", "25 00 64 00 2C 64")])),

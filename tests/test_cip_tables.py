@@ -7,8 +7,8 @@
   recorded as evidence are right, every value they write fits the table's type;
 - against our own files in corpus/cip (MANIFEST.tsv): the clean files fit the
   tables, each fault file breaks them in exactly the one place it names;
-- corpus/idioms (MANIFEST.tsv): each file draws today's code for its generator
-  idiom, and the evidence counted for it is what the real files give.
+- corpus/idioms (MANIFEST.tsv): each file draws the code edsconv.idioms decided
+  for its generator idiom, and the evidence counted for it is what the real files give.
 """
 
 from __future__ import annotations
@@ -27,14 +27,15 @@ import pytest
 from conftest import REPO, SHARED_REAL
 from edsconv import cip_tables as cip
 from edsconv import spec_tables as spec
-from edsconv.diagnostics import Severity
+from edsconv.diagnostics import Severity, load_rules
 from edsconv.eds.reader import load
 from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String
+from edsconv.idioms import IDIOMS
 from edsconv.lint import lint_file
 from edsconv.model import values
 
 CIP_CORPUS = REPO / "corpus" / "cip"
-IDIOMS = REPO / "corpus" / "idioms"
+IDIOMS_DIR = REPO / "corpus" / "idioms"
 REAL_FILES = sorted(p for p in SHARED_REAL.glob("*") if p.suffix in (".eds", ".EDS")) if SHARED_REAL.is_dir() else []
 needs_real = pytest.mark.skipif(not REAL_FILES, reason="../shared/corpus/real is not there")
 
@@ -457,8 +458,40 @@ def _found_required(eds: EdsFile):
                 yield section.name, entry_spec.keyword
 
 
+def _defined(eds: EdsFile) -> set[str]:
+    return {entry.keyword for section in eds.sections for entry in section.entries}
+
+
+def _found_references(eds: EdsFile):
+    """AssemExaN members naming no entry; [IO_Info] defaults naming no InputN / OutputN (0: none);
+    DefaultSafetyConnections naming no ConnectionN."""
+    defined = _defined(eds)
+    for section in eds.sections:
+        for entry in section.entries:
+            words = [f.value.raw for f in entry.fields if isinstance(f.value, Scalar)]
+            if entry.keyword.startswith("AssemExa") and any(
+                    re.fullmatch(r"(Param|Assem|AssemExa)[0-9]+", w) and w not in defined for w in words):
+                yield section.name, entry.keyword
+            defaults = zip(("Input", "Output"), words[1:3], strict=False)
+            if section.name == "IO_Info" and entry.keyword.endswith("Info") and any(
+                    w != "0" and f"{kind}{w}" not in defined for kind, w in defaults):
+                yield section.name, entry.keyword
+            if entry.keyword == "DefaultSafetyConnections" and any(f"Connection{w}" not in defined for w in words):
+                yield section.name, entry.keyword
+
+
+def _found_io_sizes(eds: EdsFile):
+    """[IO_Info] InputN / OutputN whose path size (field 5) is not the byte count of its path (field 6)."""
+    io = eds.section("IO_Info")
+    for entry in io.entries if io else ():
+        if re.fullmatch(r"(Input|Output)[0-9]+", entry.keyword) and \
+                int(entry.fields[4].value.raw) != len(entry.fields[5].value.text.split()):
+            yield io.name, entry.keyword
+
+
 DETECTORS = {"field": _found_fields, "class-code": _found_class_codes, "duplicate": _found_duplicates,
-             "label-instance": _found_label_instances, "icon": _found_icons, "required-entry": _found_required}
+             "label-instance": _found_label_instances, "icon": _found_icons, "required-entry": _found_required,
+             "reference": _found_references, "io-sizes": _found_io_sizes}
 
 
 def manifest() -> list[dict[str, str]]:
@@ -491,25 +524,29 @@ def test_cip_file_has_exactly_its_fault(row):
 
 @pytest.mark.parametrize("row", [r for r in manifest() if r["kind"] != "clean"], ids=lambda row: row["file"])
 def test_fault_severity_follows_the_source(row):
-    """An error only where a documented fact (eds-pie, the 2003 text) is broken."""
+    """An error only where a documented fact (eds-pie, the 2003 text) is broken; the code's rule has
+    the manifest's severity."""
+    assert str(load_rules().rules[row["code"]].severity) == row["severity"]
     if row["kind"] == "class-code":
         table = cip.section_spec(row["section"])
     elif row["kind"] == "duplicate":
-        assert (row["basis"], row["proposed_code"], row["severity"]) == ("2003 text", "EDS009", "error")
+        assert (row["basis"], row["code"], row["severity"]) == ("2003 text", "EDS009", "error")
         return
     else:
         table = cip.entry_spec(row["section"], row["entry"])
-    practice = table.provenance.practice_only or row["kind"] in ("icon", "label-instance")
+    practice = table.provenance.practice_only or row["kind"] in ("icon", "label-instance", "io-sizes")
     assert row["basis"] == ("practice" if practice else "eds-pie")
     assert row["severity"] == ("warning" if practice else "error")
 
 
 @pytest.mark.parametrize("row", manifest(), ids=lambda row: row["file"])
-def test_cip_files_lint_today_without_errors_but_duplicates(row):
-    """Today's lint sees the newer content as notes only; phase 2 adds the checks."""
+def test_cip_file_draws_its_code_and_no_other_error(row):
+    """lint gives a fault file its manifest code (EDS5xx, or EDS009) once and a clean file none; the
+    files have no other error."""
     report = lint_file(str(CIP_CORPUS / row["file"]))
-    errors = {d.code for d in report.diagnostics if d.severity is Severity.ERROR}
-    assert errors == ({"EDS009"} if row["kind"] == "duplicate" else set())
+    newer = [d for d in report.diagnostics if d.code.startswith("EDS5") or d.code == "EDS009"]
+    assert [d.code for d in newer] == ([] if row["kind"] == "clean" else [row["code"]])
+    assert {d.code for d in report.diagnostics if d.severity is Severity.ERROR} <= {row["code"]}
 
 
 # --- generator idioms: corpus/idioms -------------------------------------------------------
@@ -519,23 +556,26 @@ _NEWER_CONTENT_NOTES = {"EDS006", "EDS219", "EDS220"}
 
 
 def idioms() -> list[dict[str, str]]:
-    with (IDIOMS / "MANIFEST.tsv").open(newline="") as handle:
+    with (IDIOMS_DIR / "MANIFEST.tsv").open(newline="") as handle:
         return list(csv.DictReader(handle, delimiter="\t"))
 
 
 def test_idiom_manifest_lists_every_file():
-    assert sorted(r["file"] for r in idioms()) == sorted(p.name for p in IDIOMS.glob("*.eds"))
+    assert sorted(r["file"] for r in idioms()) == sorted(p.name for p in IDIOMS_DIR.glob("*.eds"))
+
+
+def test_every_idiom_has_a_decision():
+    assert [idiom.file for idiom in IDIOMS] == [row["file"] for row in idioms()]
 
 
 @pytest.mark.parametrize("row", idioms(), ids=lambda row: row["file"])
-def test_idiom_file_draws_todays_code(row):
-    """Each file reproduces the idiom: today's lint gives exactly the codes the manifest
-    names (phase 2 of issue 10 turns the errors among them into notes at most)."""
-    report = lint_file(str(IDIOMS / row["file"]))
-    codes = {d.code for d in report.diagnostics} - _NEWER_CONTENT_NOTES
-    assert codes == set(row["codes_today"].split(","))
-    worst = max(d.severity for d in report.diagnostics if d.code in codes)
-    assert worst.name.lower() == row["severity_today"]
+def test_idiom_file_draws_the_decided_code_and_no_error(row):
+    """Each file reproduces the idiom: lint gives exactly the codes edsconv.idioms decided, none an
+    error (in phase 1 it gave codes_phase1)."""
+    decided = next(idiom for idiom in IDIOMS if idiom.file == row["file"])
+    report = lint_file(str(IDIOMS_DIR / row["file"]))
+    assert {d.code for d in report.diagnostics} - _NEWER_CONTENT_NOTES == set(decided.codes)
+    assert all(d.severity is not Severity.ERROR for d in report.diagnostics)
 
 
 @functools.cache
@@ -546,7 +586,7 @@ def _real_lint() -> list:
 @needs_real
 @pytest.mark.parametrize("row", idioms(), ids=lambda row: row["file"])
 def test_idiom_evidence_is_the_real_files(row):
-    code = max(row["codes_today"].split(","))
+    code = max(row["codes_phase1"].split(","))
     pattern = re.compile(row["message_regex"]) if row["message_regex"] else None
     hits = [d for d in _real_lint() if d.code == code and (pattern is None or pattern.search(d.message))]
     assert (len(hits), len({d.path for d in hits})) == (int(row["real_diagnostics"]), int(row["real_files"]))

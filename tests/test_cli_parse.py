@@ -14,7 +14,7 @@ from edsconv.cli import cli
 
 CLEAN = "[File]\nDescText = \"x\"; $ c\n[Device]\nK = 1, {2, *};\n"
 BROKEN = '[File]\nA = 1 ];\nB = "a\\qb";\n'
-WARNING_ONLY = "[File]\n[TCP/IP Interface Class]\nA = 1;\n"
+WARNING_ONLY = "[File]\n[Diagnostics/Extra]\nA = 1;\n"
 LINE = re.compile(r"^(?P<path>.+):(?P<line>\d+):(?P<col>\d+): (?P<severity>error|warning|info): (?P<code>EDS\d{3}) "
                   r"(?P<message>.+) \[(?P<clause>C\.[\d.]+)\]$")
 

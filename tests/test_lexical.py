@@ -24,7 +24,7 @@ def test_valid_section_names(header, name):
 
 
 @pytest.mark.parametrize("header, name", [
-    ("[TCP/IP Interface Class]", "TCP/IP Interface Class"),
+    ("[Diagnostics/Extra Class]", "Diagnostics/Extra Class"),
     ("[Device  Classification]", "Device  Classification"),
     ("[Device-Info]", "Device-Info"),
 ])

@@ -27,20 +27,27 @@ files.
 
 from __future__ import annotations
 
+import enum
 import re
 from collections.abc import Mapping
 from types import MappingProxyType
 
 from edsconv.spec_tables import (
+    CLASSIFICATION_ENTRIES,
+    CONNECTION_ENTRIES,
     CONNECTION_FIELDS,
     SECTIONS,
+    VENDOR_SECTION,
     EntrySpec,
     FieldSpec,
     Presence,
     Provenance,
     SectionSpec,
     find_entry,
+    is_vendor_keyword,
 )
+from edsconv.spec_tables import entry_spec as entry_spec_2003
+from edsconv.spec_tables import section_spec as section_spec_2003
 
 O, R = Presence.OPTIONAL, Presence.REQUIRED  # noqa: E741 - the column letters of spec_tables
 #: eds-pie 1.2.0 reference files.
@@ -515,11 +522,12 @@ SECTION_EXTENSIONS: Mapping[str, SectionSpec] = MappingProxyType({s.name: s for 
                COMMON_OBJECT_ENTRIES),
 )})
 
-#: ClassN keywords eds-pie lists beyond the 2003 three (none in the real files).
+#: ClassN keywords eds-pie lists beyond the 2003 three (Safety in 1 real file).
 CLASSIFICATION_KEYWORDS_NEWER = ("CompoNet", "EtherNetIP_In_Cabinet", "EtherNetIP_UDP_Only", "ModbusSL",
                                  "ModbusTCP", "Safety", "HART", "IOLink")
-CLASSIFICATION_KEYWORDS_NEWER_SOURCE = _src(f"{META}: Device Classification.ClassN", 0,
-                                            "the files write EtherNetIP, and 1_RSNetWorx_Connectable_Module (3)")
+CLASSIFICATION_KEYWORDS_NEWER_SOURCE = _src(f"{META}: Device Classification.ClassN", 1,
+                                            "the files write EtherNetIP, 1_RSNetWorx_Connectable_Module (3), and "
+                                            f"Safety as Class2 beside EtherNetIP ({_SAFETY})")
 
 # --- vendor-specific sections ----------------------------------------------------------------
 
@@ -575,3 +583,61 @@ def class_id_of(section: str) -> int | None:
 def all_sections() -> tuple[SectionSpec, ...]:
     """Every section table here: the new sections, the extensions, the vendor class form."""
     return (*CIP_SECTIONS.values(), *SECTION_EXTENSIONS.values(), VENDOR_CLASS_SECTION)
+
+
+class Known(enum.Enum):
+    """Who defines a section or an entry keyword (:func:`known`)."""
+
+    #: ISO 15745-4:2003 (edsconv.spec_tables)
+    ISO_2003 = "ISO 15745-4:2003"
+    #: these tables: later CIP editions, as eds-pie and the real files show them
+    NEWER = "newer CIP tables"
+    #: a vendor: ``VendorID_keyword`` (C.4.1.2.2.11), ``[Class<ID>_Vendor<VendorID>]``, and every
+    #: keyword of a ``[VendorID_keyword]`` section
+    VENDOR = "vendor-specific"
+
+
+def known(section: str, keyword: str | None = None) -> Known | None:
+    """Who defines ``[section]`` (``keyword`` None) or the entry ``keyword`` in it; None when
+    neither the 2003 text, nor these tables, nor a vendor pattern does.
+
+    The one answer the checks consult (EDS006, EDS219, EDS222):
+    a numbered family resolves (``TSpec3``), brackets are optional. A keyword counts in its own
+    section only: ``MaxInst`` is known in ``[Ethernet Link Class]``, not in ``[Capacity]``.
+    """
+    name = section.strip().removeprefix("[").removesuffix("]").strip()
+    if keyword is None:
+        if name in SECTIONS:
+            return Known.ISO_2003
+        if name in CIP_SECTIONS:
+            return Known.NEWER
+        vendor = section_spec_2003(name) is VENDOR_SECTION or vendor_class_section(name) is not None
+        return Known.VENDOR if vendor else None
+    if is_vendor_keyword(keyword):
+        return Known.VENDOR
+    if name in SECTIONS and entry_spec_2003(name, keyword) is not None:
+        return Known.ISO_2003
+    if entry_spec(name, keyword) is not None:
+        return Known.NEWER
+    return Known.VENDOR if section_spec_2003(name) is VENDOR_SECTION else None
+
+
+def known_choice(field_spec: FieldSpec, word: str) -> Known | None:
+    """Who defines ``word`` as the value of a keyword field: the field's own list (the 2003 text's, or
+    these tables' for a field of theirs), a vendor (when the field takes VendorID_keyword), or these
+    tables' additions to a 2003 list (``Safety`` for the ClassN classification); None otherwise."""
+    if word in field_spec.choices:
+        return Known.ISO_2003 if field_spec.provenance is None else Known.NEWER
+    if field_spec.vendor_keywords and is_vendor_keyword(word):
+        return Known.VENDOR
+    if field_spec is CLASSIFICATION_ENTRIES[0].fields[0] and word in CLASSIFICATION_KEYWORDS_NEWER:
+        return Known.NEWER
+    return None
+
+
+def known_field_count(spec: EntrySpec) -> int | None:
+    """How many fields the 2003 text and these tables define together for a 2003 entry (ConnectionN:
+    15 plus the 2 of CIP Safety); None for an entry with a repeating tail."""
+    if spec.max_fields is None:
+        return None
+    return spec.max_fields + (len(CONNECTION_SAFETY_FIELDS) if spec is CONNECTION_ENTRIES[0] else 0)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 from typing import Any
 
+from edsconv import cip_tables
 from edsconv import spec_tables as tables
 from edsconv.model import (
     Assembly,
@@ -25,18 +26,27 @@ from edsconv.model import (
     Parameter,
     Reference,
 )
+from edsconv.model.cip import DeviceNetIo, IoData, Service
+from edsconv.model.cip_build import modelled
 from edsconv.model.epath import decode_path
+from edsconv.model.icon import Icon
 from edsconv.model.plain import plain
+from edsconv.model.values import PathItem
 
 #: ``--section`` names -> the keys of the :func:`describe` document they show.
 SECTIONS: dict[str, tuple[str, ...]] = {
-    "identity": ("file", "identity", "classifications", "param_class"),
+    "identity": ("file", "identity", "classifications", "param_class", "additions"),
     "parameters": ("parameters",),
     "groups": ("groups",),
-    "assemblies": ("assembly_revision", "assemblies"),
+    "assemblies": ("assembly_revision", "assemblies", "extended_assemblies"),
     "connections": ("connections",),
     "ports": ("ports",),
     "modular": ("modular",),
+    "capacity": ("capacity",),
+    "network": ("network",),
+    "objects": ("object_classes",),
+    "devicenet": ("devicenet",),
+    "icon": ("icon",),
     "other": ("other_sections", "extra_entries"),
 }
 
@@ -311,8 +321,76 @@ def describe(device: Device) -> dict:
                 "path": decode_path(modular.query.path, device), "service": hex_code(modular.query.service, 2),
                 "id_size": modular.query.id_size, "empty_slot_id": plain(modular.query.empty_slot_id)},
         },
-        "other_sections": [{"name": s.name, "entries": len(s.entries)} for s in device.other_sections],
-        "extra_entries": {section: [e.keyword for e in entries] for section, entries in device.extra_entries.items()},
+        **describe_newer(device),
+    }
+
+
+# --- content beyond the 2003 text (model.cip) ------------------------------------------------------------
+
+
+def _data(value: Any) -> Any:
+    """A model.cip record as plain JSON data: its compared fields, references by keyword, paths as text."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, (type, Reference, PathItem, Service)):
+        return {f.name: _data(getattr(value, f.name)) for f in dataclasses.fields(value) if f.compare}
+    if isinstance(value, list):
+        return [_data(item) for item in value]
+    if isinstance(value, dict):
+        return {str(key): _data(item) for key, item in value.items()}
+    return plain(value)
+
+
+def describe_icon(icon: Icon | None) -> dict | None:
+    if icon is None:
+        return None
+    return {"kind": icon.kind, "valid_ico": icon.valid_ico, "bytes": len(icon.data) if icon.data is not None else None,
+            "images": _data(list(icon.images)), "problem": icon.problem}
+
+
+def describe_devicenet(io: DeviceNetIo | None, device: Device) -> dict | None:
+    if io is None:
+        return None
+
+    def data(item: IoData) -> dict:
+        return {**_data(item), "path": decode_path(item.path, device),
+                "connection_mask": hex_code(item.connection_mask, 4)}
+
+    return {"default": hex_code(io.default, 4),
+            "modes": [{**_data(mode), "combination_mask": hex_code(mode.combination_mask, 4)}
+                      for mode in io.modes.values()],
+            "inputs": [data(item) for item in io.inputs.values()],
+            "outputs": [data(item) for item in io.outputs.values()],
+            "enum_strings": _data(io.enum_strings)}
+
+
+def _unmodelled(device: Device) -> tuple[list[dict], dict[str, list[str]]]:
+    """The sections and entries the typed model does not hold (vendor-specific, unknown), as written."""
+    typed = {s.name for s in device.other_sections if cip_tables.section_spec(s.name) is not None}
+    sections = [{"name": s.name, "entries": len(s.entries)} for s in device.other_sections if s.name not in typed]
+    entries: dict[str, list[str]] = {}
+    for name, generic in [*device.extra_entries.items(), *((s.name, s.entries) for s in device.other_sections
+                                                             if s.name in typed)]:
+        keywords = [e.keyword for e in generic if not modelled(name, e.keyword)]
+        if keywords:
+            entries.setdefault(name, []).extend(keywords)
+    return sections, entries
+
+
+def describe_newer(device: Device) -> dict:
+    """The parts of the document for the content beyond the 2003 text, and what is kept only as written."""
+    network = {"tcpip_interface": device.tcpip_interface, "ethernet_link": device.ethernet_link, "dlr": device.dlr,
+               "ingress_egress": device.ingress_egress}
+    others, extra = _unmodelled(device)
+    return {
+        "additions": _data(device.additions),
+        "extended_assemblies": [describe_assembly(a, device) for a in device.extended_assemblies.values()],
+        "capacity": _data(device.capacity),
+        "network": _data(network) if any(network.values()) else None,
+        "object_classes": [{**_data(record), "class_name": tables.CIP_CLASSES.get(record.class_id or -1)}
+                           for record in device.object_classes.values()],
+        "devicenet": describe_devicenet(device.devicenet, device),
+        "icon": describe_icon(device.icon_contents),
+        "other_sections": others,
+        "extra_entries": extra,
     }
 
 

@@ -4,8 +4,11 @@
 and field by field. What counts is the meaning, not the spelling: ``0x10`` and
 ``16`` are the same descriptor, entries may stand in any order, comments are
 ignored. NaN equals NaN; references compare by keyword (not by what they
-resolve to); entries and sections the 2003 text does not define compare by
-keyword and by their values as written.
+resolve to). Entries and sections later CIP editions define (edsconv.cip_tables:
+[Capacity], the object classes, AssemExaN, IconContents ...) compare by keyword
+and by the values of their fields' types, field by field (the icon by its
+decoded bytes); what neither the 2003 text nor the tables define compares by
+its values as written.
 
 Each :class:`Change` says what changed (``Param3 default``, ``Assem100 member 2``,
 ``Connection1 O=>T RPI``, ``identity.product_code``) with the old and new value
@@ -15,11 +18,13 @@ spelled as in an EDS (:func:`edsconv.eds.from_model.render_value`).
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from edsconv import cip_tables
 from edsconv import spec_tables as tables
 from edsconv.eds.syntax import Group, Scalar, String
 from edsconv.model import (
@@ -36,6 +41,8 @@ from edsconv.model import (
     Reference,
     parameter_field_type,
 )
+from edsconv.model.cip_build import ASSEMBLY_FAMILIES, modelled, reading
+from edsconv.model.icon import decode_icon
 from edsconv.model.values import PathItem, StringIMember
 
 #: Categories of changes, in the order the text output lists them.
@@ -230,6 +237,8 @@ def diff(a: Device, b: Device) -> list[Change]:
     d.keyed({f"Port{p.number}": p for p in a.ports}, {f"Port{p.number}": p for p in b.ports}, "others",
             lambda key, old, new: d.attributes(key, old, new, _PORT, "others", " "), lambda p: display(p.name))
     _modular(d, a, b)
+    d.keyed(a.extended_assemblies, b.extended_assemblies, "assemblies",
+            lambda key, old, new: _assembly(d, key, old, new), lambda x: display(x.name))
     _generic(d, a, b)
     return d.changes
 
@@ -310,20 +319,81 @@ def _entries_by_keyword(entries: list[GenericEntry]) -> dict[str, list]:
 
 def _generic(d: _Differ, a: Device, b: Device) -> None:
     for section in dict.fromkeys([*a.extra_entries, *b.extra_entries]):
-        old = _entries_by_keyword(a.extra_entries.get(section, []))
-        new = _entries_by_keyword(b.extra_entries.get(section, []))
-        for keyword in dict.fromkeys([*old, *new]):
-            d.value(f"[{section}] {keyword}", old.get(keyword), new.get(keyword), "others")
+        _entries(d, section, a.extra_entries.get(section, []), b.extra_entries.get(section, []))
     old_sections, new_sections = _sections_by_name(a.other_sections), _sections_by_name(b.other_sections)
     for name in dict.fromkeys([*old_sections, *new_sections]):
         before, after = old_sections.get(name), new_sections.get(name)
         if before is None or after is None:
             kind = "added" if before is None else "removed"
             d.changes.append(Change(kind, f"[{name}]", category="others"))
-            continue
-        old, new = _entries_by_keyword(before.entries), _entries_by_keyword(after.entries)
-        for keyword in dict.fromkeys([*old, *new]):
-            d.value(f"[{name}] {keyword}", old.get(keyword), new.get(keyword), "others")
+        else:
+            _entries(d, name, before.entries, after.entries)
+
+
+#: The category of the entries later editions add to a 2003 section; those of other sections are "others".
+_SECTION_CATEGORIES = {"File": "identity", "Device": "identity", "ParamClass": "params", "Groups": "params",
+                       "Assembly": "assemblies", "Connection Manager": "connections"}
+
+
+def _entries(d: _Differ, section: str, before: list[GenericEntry], after: list[GenericEntry]) -> None:
+    """The entries of a section that the 2003 model does not hold: those the cip_tables define by the
+    values of their types (``0x1`` is ``1``), field by field; the others as written. AssemExaN are
+    compared as assemblies (:func:`_newer`)."""
+    old, new = _entries_by_keyword(before), _entries_by_keyword(after)
+    category = _SECTION_CATEGORIES.get(section, "others")
+    for keyword in dict.fromkeys([*old, *new]):
+        spec = cip_tables.entry_spec(section, keyword.partition("#")[0])
+        if spec is None or not modelled(section, keyword.partition("#")[0]):
+            d.value(f"[{section}] {keyword}", old.get(keyword), new.get(keyword), category)
+        elif spec.keyword not in ASSEMBLY_FAMILIES:
+            _typed_entry(d, f"[{section}] {keyword}", spec, old.get(keyword), new.get(keyword), category)
+
+
+def _typed_entry(d: _Differ, what: str, spec: tables.EntrySpec, old: list | None, new: list | None,
+                 category: str) -> None:
+    if old is None or new is None:
+        if new is not None:
+            d.changes.append(Change("added", what, None, display(_typed_values(spec, new)), category))
+        elif old is not None:
+            d.changes.append(Change("removed", what, display(_typed_values(spec, old)), None, category))
+    elif spec.keyword == "IconContents":
+        old_icon, new_icon = _icon_text(old), _icon_text(new)
+        if old_icon != new_icon:
+            d.changes.append(Change("changed", what, old_icon, new_icon, category))
+    elif spec.repeating or len(spec.fields) == 1:
+        d.value(what, _typed_values(spec, old), _typed_values(spec, new), category, spec.fields[0].alternatives[0])
+    else:
+        before, after = _typed_values(spec, old), _typed_values(spec, new)
+        for index, field_spec in enumerate(spec.fields):
+            d.value(f"{what} {field_spec.name}", _at(before, index), _at(after, index), category,
+                    field_spec.alternatives[0])
+
+
+def _typed_values(spec: tables.EntrySpec, values: list) -> list:
+    """Each field by its FieldSpec's type (its one reading when it breaks a notation rule); a value that
+    fits none stays as written (so a change still shows)."""
+    out = []
+    for index, value in enumerate(values):
+        field_spec = spec.field_at(index + 1)
+        typed, problem = reading(value, field_spec)
+        as_written = field_spec is None or (problem is not None and typed is None)
+        out.append(value if as_written else typed)
+    return out
+
+
+def _at(values: list, index: int):
+    return values[index] if index < len(values) else None
+
+
+def _icon_text(values: list) -> str | None:
+    """An icon by what its bytes are: equal bytes are the same icon however the base64 is split."""
+    text = values[0] if values else None
+    if not isinstance(text, String):
+        return display(text)
+    icon = decode_icon(text.text)
+    if icon.data is None:
+        return f"{icon.kind}: {text.text}"
+    return f"{icon.kind.upper()}, {len(icon.data)} bytes, sha256 {hashlib.sha256(icon.data).hexdigest()[:16]}"
 
 
 def _sections_by_name(sections: list[GenericSection]) -> dict[str, GenericSection]:

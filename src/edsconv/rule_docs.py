@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 from edsconv.diagnostics import Alias, FixSafety, Rule, RuleRegistry, Selection, load_rules
 from edsconv.fix import fix_documentation
+from edsconv.idioms import idioms_section
 
 PAGE_INTRO = """\
 <!-- Generated from the rule definitions by `edsconv rules --format markdown`: edit those, not this file. -->
@@ -80,8 +81,10 @@ the entire string"). A warning's value is always kept, unmarked."""),
 The checks of `src/edsconv/checks/structure.py`: which sections and entries a
 file has, where they stand, how many fields an entry has, and which keywords it
 uses. They are driven by the tables of ISO 15745-4:2003 (`spec_tables`).
-Sections, entries and keywords that later CIP editions added are information
-(EDS209, EDS219, EDS220), never errors. An EDS is checked against Table C.27
+Sections, entries and keywords that later CIP editions added are checked by the
+EDS5xx rules (`cip_tables`); fields beyond both and keywords defined for another
+section are information (EDS209, EDS219), a keyword no table defines a warning
+(EDS222), never an error. An EDS is checked against Table C.27
 (EtherNet/IP) unless it is classified only under DeviceNet or ControlNet, or is
 a DeviceNet EDS without classification (it has an `[IO_Info]` section); those
 follow Table C.3 alone."""),
@@ -95,6 +98,14 @@ different files) and are not reported."""),
     RuleGroup("Merge of adapter and module EDS files (`edsconv merge`, EDS4xx)", ("EDS4",), """\
 See docs/merge.md for what a matching Rack entry is and how entries combine.
 The examples show the adapter's entries; the module (`ProxiedXN`) is named."""),
+    RuleGroup("Content beyond the 2003 text (EDS5xx)", ("EDS5",), """\
+Checks of `src/edsconv/checks/objects.py` on what later CIP editions define and
+real files write: [Capacity], the object class sections, AssemExaN, IconContents,
+DeviceNet `[IO_Info]`, CIP Safety entries (the tables: `cip_tables`, docs/spec_tables.md).
+We do not hold the current CIP specification, so the clause of these rules is the
+source of the fact: `eds-pie 1.2.0` (its references state the type, keyword list,
+class ID or required entry: an error) or `real files` (known from practice only: a
+warning at most). The message names the exact record."""),
     RuleGroup("XML profiles (`edsconv validate`)", ("XML0",)),
     RuleGroup("Conversion (`edsconv xml2eds`)", ("XML1", "XML2")),
 )
@@ -155,6 +166,7 @@ def rules_page(registry: RuleRegistry | None = None) -> str:
         members = [text for code, text in sorted(entries) if group_of(code) is group]
         if members:
             sections.append("\n\n".join(part for part in (f"## {group.title}", group.intro, *members) if part))
+    sections.append(idioms_section())
     return "\n\n".join(sections) + "\n"
 
 

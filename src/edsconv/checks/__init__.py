@@ -59,7 +59,8 @@ def check(*rules: Rule) -> Callable[[CheckFunction], Check]:
 
 
 #: Every module that defines checks: :func:`load_checks` collects their module-level :class:`Check` objects.
-CHECK_MODULES = ("edsconv.checks.entities", "edsconv.checks.addressing", "edsconv.checks.structure")
+CHECK_MODULES = ("edsconv.checks.entities", "edsconv.checks.addressing", "edsconv.checks.structure",
+                 "edsconv.checks.objects")
 
 
 @functools.cache

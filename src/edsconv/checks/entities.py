@@ -507,6 +507,8 @@ def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
 
 
 def _nested_assemblies(assembly: Assembly) -> Iterator[tuple[AssemblyMember, Assembly]]:
+    if assembly.opaque:
+        return  # EZ-EDS's opaque data, not a nesting (EDS514)
     for member in assembly.members:
         if isinstance(member.reference, Reference) and isinstance(member.reference.target, Assembly):
             yield member, member.reference.target

@@ -448,10 +448,13 @@ ASSEMBLY_CYCLE = rule(
     import_blocking=True,
     explanation="""
         An assembly reaches itself through its assembly members (directly or through
-        others), so it has no finite size; no tool can import it.
+        others), so it has no finite size; no tool can import it. EZ-EDS's opaque
+        assembly, whose one member names the assembly itself with its full size, is
+        read as data of that size instead (EDS514).
     """,
     bad=block("""
-        Assem100 = "In","",4,,,,32,Assem100;
+        Assem100 = "In","",4,,,,32,Assem101;
+        Assem101 = "Out","",4,,,,32,Assem100;
     """),
     good=block("""
         Assem101 = "Outer","",4,,,,32,Assem100;

@@ -3,7 +3,9 @@
 C.4.1.2.2.10: a public keyword is one the CIP specification defines. edsconv holds the 2003 text's
 keywords (:mod:`edsconv.spec_tables`) and those later editions added that real files and eds-pie
 show (:mod:`edsconv.cip_tables`); a keyword in neither, that is not vendor-specific, is unknown
-(EDS222), and :func:`closest` finds what it was probably meant to be.
+(EDS222), and :func:`closest` finds what it was probably meant to be. Whether a section or keyword is
+known is :func:`edsconv.cip_tables.known`'s answer; this module adds where else a keyword is defined
+and the keywords a misspelling is compared with.
 """
 
 from __future__ import annotations
@@ -20,21 +22,11 @@ from edsconv import spec_tables as tables
 _LIKENESS = 0.6
 
 
-def known_section(name: str) -> bool:
-    """A section the 2003 text or the newer tables define, or a vendor-specific one."""
-    return tables.section_spec(name) is not None or cip_tables.section_spec(name) is not None
-
-
 def newer_entry(section: str, keyword: str) -> bool:
     """True when the newer tables define ``keyword`` in ``section``, or in any section (keywords are
     global in scope, C.4.1.2.2.8); the 2003 text's entries are looked up in spec_tables."""
     return cip_tables.entry_spec(section, keyword) is not None or any(
         tables.find_entry(spec.entries, keyword) is not None for spec in cip_tables.all_sections())
-
-
-def newer_classification(word: str) -> bool:
-    """A ClassN keyword later editions define (eds-pie's list; ``Safety``, ``CompoNet`` ...)."""
-    return word in cip_tables.CLASSIFICATION_KEYWORDS_NEWER
 
 
 @functools.cache

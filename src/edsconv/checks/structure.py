@@ -19,6 +19,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
+from edsconv import cip_tables
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check, keywords
 from edsconv.checks.structure_rules import (
@@ -39,7 +40,6 @@ from edsconv.checks.structure_rules import (
     PUBLIC_CLASS_SUBCLASSIFIED,
     REQUIRED_FIELD_EMPTY,
     RESERVED_FIELD_SET,
-    SECTION_BEYOND_2003,
     SECTION_PLACEMENT,
     TOO_MANY_FIELDS,
     UNKNOWN_KEYWORD,
@@ -167,19 +167,16 @@ def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
-@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, SECTION_BEYOND_2003, UNKNOWN_KEYWORD)
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
 def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
     for section in ctx.eds.sections:
         problem = _keyword_problem(section.name)
         if problem is not None:
             yield ctx.at(problem[0], f"section [{section.name}]: {problem[1]}", section)
-        elif not keywords.known_section(section.name):
+        elif cip_tables.known(section.name) is None:
             meant = keywords.closest(section.name, keywords.section_names())
             yield ctx.at(UNKNOWN_KEYWORD, f"[{section.name}] {_UNDEFINED}{_did_you_mean(meant and f'[{meant}]')}",
                          section, clause="C.4.1.2.2.5")
-        elif tables.section_spec(section.name) is None:
-            yield ctx.at(SECTION_BEYOND_2003, f"[{section.name}] is not a section of ISO 15745-4:2003 (kept)",
-                         section)
 
 
 #: What EDS222 says of a keyword no table defines.
@@ -292,29 +289,27 @@ def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     information) and keywords no table defines (a warning)."""
     for section in ctx.eds.sections:
         spec = tables.SECTIONS.get(section.name)
+        newer = spec is None and cip_tables.section_spec(section.name) is not None
         for entry in section.entries:
             problem = _keyword_problem(entry.keyword)
             if problem is not None:
                 yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
-            elif spec is None or tables.is_vendor_keyword(entry.keyword) or spec.entry(entry.keyword) is not None:
-                continue
-            elif tables.entries_named(entry.keyword) or keywords.newer_entry(spec.name, entry.keyword):
-                yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(spec, entry.keyword)} (kept)",
-                             entry)
-            else:
-                meant = keywords.closest(entry.keyword, *keywords.entry_keywords(spec.name))
-                yield ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} in [{spec.name}] {_UNDEFINED}{_did_you_mean(meant)}",
-                             entry, clause="C.4.1.2.2.9")
+            elif (spec is not None or newer) and cip_tables.known(section.name, entry.keyword) is None:
+                if tables.entries_named(entry.keyword) or keywords.newer_entry(section.name, entry.keyword):
+                    yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(section.name, entry.keyword)} "
+                                                      "(kept)", entry)
+                else:
+                    meant = keywords.closest(entry.keyword, *keywords.entry_keywords(section.name))
+                    yield ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} in [{section.name}] {_UNDEFINED}"
+                                                  f"{_did_you_mean(meant)}", entry, clause="C.4.1.2.2.9")
 
 
-def _why_undefined(section: tables.SectionSpec, keyword: str) -> str:
-    family = tables.split_numbered(keyword)[0]
-    if family in tables.RESERVED_ENTRY_KEYWORDS.get(section.name, ()):
-        return f"is reserved by ISO 15745-4:2003 for future entry types of [{section.name}]"
+def _why_undefined(section: str, keyword: str) -> str:
+    """Where the 2003 text or the newer tables define a keyword that ``[section]`` does not hold."""
     elsewhere = sorted({spec.section for spec in tables.entries_named(keyword)})
     if elsewhere:
-        return f"is defined by ISO 15745-4:2003 for [{'], ['.join(elsewhere)}], not for [{section.name}]"
-    return f"is not an entry of [{section.name}] in ISO 15745-4:2003"
+        return f"is defined by ISO 15745-4:2003 for [{'], ['.join(elsewhere)}], not for [{section}]"
+    return f"is defined by the newer CIP tables for other sections, not for [{section}]"
 
 
 @check(NUMBERING)
@@ -365,7 +360,7 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
             if spec.max_fields == 1:
                 yield ctx.at(TOO_MANY_FIELDS, f"{entry.keyword} holds one value ({spec.fields[0].name}) but has "
                                               f"{len(entry.fields)} fields", extra)
-            else:
+            elif len(entry.fields) > (cip_tables.known_field_count(spec) or 0):
                 yield ctx.at(FIELDS_BEYOND_2003, f"{entry.keyword} has {len(entry.fields)} fields; ISO 15745-4:2003 "
                                                  f"defines {spec.max_fields} (later fields kept)", extra)
         for index, item in enumerate(entry.fields):
@@ -382,7 +377,7 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
 _OWN_RULE_FIELDS = frozenset({("Port", 1), ("Query", 2)})
 
 
-@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, KEYWORD_BEYOND_2003, UNKNOWN_KEYWORD)
+@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
     for entry, spec in _specified_entries(ctx):
@@ -396,7 +391,8 @@ def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
             problem = _keyword_problem(word) if is_keyword_field and isinstance(item.value, Scalar) else None
             if problem is not None:
                 yield ctx.at(problem[0], f"{entry.keyword} field {index + 1}: {word}: {problem[1]}", item)
-            elif field_spec.choices and not _is_choice(word, field_spec):
+            elif field_spec.choices and not _is_choice(word, field_spec) \
+                    and cip_tables.known_choice(field_spec, word) is None:
                 yield _not_a_choice(ctx, entry, index, word, field_spec, item)
 
 
@@ -413,12 +409,8 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
                   item: Field) -> Diagnostic:
     allowed = ", ".join(str(choice) for choice in field_spec.choices)
     if field_spec.vendor_keywords and isinstance(item.value, Scalar) and tables.KEYWORD_RE.fullmatch(word):
-        # An open list (vendors may add keywords): later CIP editions add public
-        # ones too, such as the Safety classification.
-        if keywords.newer_classification(word):
-            return ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} field {index + 1}: {word} is not a "
-                                               f"{field_spec.name} of ISO 15745-4:2003 ({allowed} or "
-                                               f"VendorID_keyword; kept)", item)
+        # An open list (vendors may add keywords); the public ones later CIP editions add, such as
+        # the Safety classification, are cip_tables.known_choice and not reported
         meant = keywords.closest(word, keywords.classification_keywords())
         return ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
                                        f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)

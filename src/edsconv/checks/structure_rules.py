@@ -161,14 +161,15 @@ FIELDS_BEYOND_2003 = rule(
     "EDS209", INFO, "C.4.1.2.2.12", "An entry has more fields than ISO 15745-4:2003 defines for it (kept)",
     explanation="""
         An entry with a fixed layout of several fields has more fields than
-        ISO 15745-4:2003 defines. Later CIP editions append fields (CIP Safety
-        connections have 17); edsconv keeps them and does not interpret them.
+        ISO 15745-4:2003 and the newer CIP tables define (those add the two CIP Safety
+        fields of a ConnectionN, which makes 17); edsconv keeps them and does not
+        interpret them.
     """,
     bad=block("""
         Connection1 = 0x04010002, 0x44640405, , 2, Assem2, , 2, Assem1, , , , ,
-                      "Owner", "", "20 04 24 01 2C 02 2C 01", 1;
+                      "Owner", "", "20 04 24 01 2C 02 2C 01", , 1, 7;
     """),
-    good="the 15 fields of Table C.22.",
+    good="the 15 fields of Table C.22, or 17 with the CIP Safety fields.",
     labels=("Bad (for the 2003 text)", "Good"),
 )
 RESERVED_FIELD_SET = rule(
@@ -319,36 +320,21 @@ KEYWORD_STARTS_WITH_DIGIT = rule(
     """),
 )
 KEYWORD_BEYOND_2003 = rule(
-    "EDS219", INFO, "C.4.1.2.2.9", "A keyword not defined by ISO 15745-4:2003 (kept)",
+    "EDS219", INFO, "C.4.1.2.2.9", "A keyword defined for other sections than the one it stands in (kept)",
     explanation="""
-        A keyword that ISO 15745-4:2003 does not define in its place but that is defined
-        elsewhere: an entry keyword of a section the 2003 text defines that later CIP
-        editions added (`IconContents`, `AssemExaN`, the reserved `VariantN` of
-        `[Assembly]`), an entry keyword the 2003 text defines for another section
-        (`MaxInst` in `[Connection Manager]`: keywords are global in scope,
-        C.4.1.2.2.8), or a first field of `ClassN` later editions added (`Safety`).
-        edsconv keeps them as they are. A keyword no table defines is EDS222.
+        An entry keyword that neither ISO 15745-4:2003 nor the tables of later CIP editions
+        (edsconv.cip_tables) define for its section, but that one of them defines for
+        another: `MaxInst` in `[Params]` (the 2003 text's is in `[ParamClass]`; keywords
+        are global in scope, C.4.1.2.2.8), `MaxInst` in `[Capacity]` (the newer tables'
+        is an object-class entry). edsconv keeps the entry as it is. What the tables
+        define in its section (`IconContents` in `[Device]`, `AssemExaN` in `[Assembly]`,
+        the object-class entries) is not reported; a keyword no table defines is EDS222.
     """,
     bad=block("""
-        [Device]
-                IconContents = "...";
+        [Params]
+                MaxInst = 4;
     """),
-    good="vendor-specific keywords (`65535_IconContents`).",
-    labels=("Example", "Not reported"),
-)
-SECTION_BEYOND_2003 = rule(
-    "EDS220", INFO, "C.4.1.2.2.5", "A section not defined by ISO 15745-4:2003 (kept)",
-    explanation="""
-        A section that ISO 15745-4:2003 does not define and that is not vendor-specific,
-        but that later CIP editions define: `[Capacity]`, the object class sections
-        (`[TCP/IP Interface Class]`, `[DLR Class]` ...), DeviceNet's `[IO_Info]`. Kept as
-        it is. A section no table defines is EDS222.
-    """,
-    bad=block("""
-        [Capacity]
-                MaxIOConnections = 4;
-    """),
-    good="`[65535_Capacity]`.",
+    good="`MaxInst = 4;` in `[ParamClass]`, and vendor-specific keywords (`65535_MaxInst`).",
     labels=("Example", "Not reported"),
 )
 NO_TCP_PORT = rule(
@@ -387,8 +373,9 @@ UNKNOWN_KEYWORD = rule(
         offers it ("did you mean").
 
         A warning, not an error: later CIP editions define keywords edsconv's tables may
-        not hold yet. Keywords the tables hold beyond the 2003 text are EDS219 and
-        EDS220 (information). The Port Type Name has its own rule (EDS333).
+        not hold yet. Keywords the tables hold beyond the 2003 text are not reported (the
+        EDS5xx rules check them); one they define for another section is EDS219
+        (information). The Port Type Name has its own rule (EDS333).
     """,
     bad=block("""
         [Device]
@@ -402,6 +389,12 @@ UNKNOWN_KEYWORD = rule(
                 Catalog = "PRB-1";
                 65535_Catalogue = "PRB-1";      $ vendor-specific
     """),
+    aliases={"EDS220": """
+        EDS220 was "a section not defined by ISO 15745-4:2003" (information) until issue 10
+        phase 2: the sections later CIP editions define are now modelled and checked
+        (EDS5xx), and a section no table defines is EDS222, so configurations that name
+        EDS220 keep working. Selecting or ignoring EDS220 acts on all of EDS222.
+    """},
 )
 ICON_NOT_ICO = rule(
     "EDS223", WARNING, "C.4.1.4.3", "The Icon file name does not end in .ico",

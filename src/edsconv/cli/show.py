@@ -2,7 +2,8 @@
 JSON for programs.
 
 The text is rendered part by part (identity, parameters, groups, assemblies, connections, ports,
-modular, other), one function each, from the same document the JSON output prints. rich is
+modular, capacity, network, objects, devicenet, icon, other), one function each, from the same
+document the JSON output prints. rich is
 imported only when the text output is rendered.
 """
 
@@ -15,10 +16,11 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
-from edsconv import analyse
-from edsconv.cli.common import EXIT_CLEAN, counts_line, documentation, read_eds, split_list
+from edsconv import analyse, cip_tables
+from edsconv.cli.common import EXIT_CLEAN, CannotRun, counts_line, documentation, read_eds, split_list, writing
 from edsconv.describe import SECTIONS, describe, select
 from edsconv.diagnostics import Severity
+from edsconv.model.cip import SINGLE_ATTRIBUTES
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -45,13 +47,17 @@ def _section_names(ctx: click.Context, param: click.Parameter, value: tuple[str,
               help=f"Show only these parts (repeat or comma-separate): {', '.join(SECTIONS)}.")
 @click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True,
               help="text: tables for people; json: the same content for programs.")
-def show_command(file: Path, sections: tuple[str, ...], output_format: str) -> int:
+@click.option("--icon", "icon_file", type=click.Path(dir_okay=False, path_type=Path), metavar="FILE",
+              help="Also write the icon IconContents holds (decoded from base64) to FILE.")
+def show_command(file: Path, sections: tuple[str, ...], output_format: str, icon_file: Path | None) -> int:
     """Show what an EDS says about a device: identity, parameters, assemblies, connections, ports, modules.
 
     Exit 0 whenever the file could be read, even when it has errors: their count goes to
     standard error and 'edsconv lint' lists them. Exit 2 when the file cannot be read.
     """
     device, diagnostics = analyse(read_eds(file))
+    if icon_file is not None:
+        _write_icon(file, device.icon_contents.data if device.icon_contents else None, icon_file)
     document = select(describe(device), sections)
     if output_format == "json":
         click.echo(json.dumps(document, indent=2, ensure_ascii=False))
@@ -60,6 +66,16 @@ def show_command(file: Path, sections: tuple[str, ...], output_format: str) -> i
     if any(d.severity >= Severity.WARNING for d in diagnostics):
         click.echo(counts_line(str(file), diagnostics, notes=False) + f" (see 'edsconv lint {file}')", err=True)
     return EXIT_CLEAN
+
+
+def _write_icon(file: Path, data: bytes | None, target: Path) -> None:
+    """The decoded IconContents to ``target``, whatever the bytes are (show says what they are)."""
+    if data is None:
+        raise CannotRun(f"{file}: no icon to write: IconContents is missing or not base64")
+    from edsconv.atomic import write_atomically
+
+    with writing(target):
+        write_atomically(target, data, force=True)
 
 
 def print_text(document: dict, sections: tuple[str, ...]) -> None:
@@ -219,6 +235,7 @@ def _identity(page: _Page, document: dict) -> None:
         page.print(page.pairs([("Max instances", pc["max_instances"]),
                                ("Descriptor", f"{pc['descriptor']} {', '.join(pc['flags'])}"),
                                ("Config assembly", pc["cfg_assembly"])]))
+    _additions(page, document)
 
 
 def _identity_rows(document: dict) -> list[Row]:
@@ -292,8 +309,8 @@ def _groups(page: _Page, document: dict) -> None:
 
 
 def _assemblies(page: _Page, document: dict) -> None:
-    for a in document["assemblies"]:
-        size = f", {a['size']} bytes" if a["size"] is not None else ""
+    for a in (*document["assemblies"], *document.get("extended_assemblies", ())):
+        size = f", {a['size']} bytes" if isinstance(a["size"], int) else f", size {a['size']}" if a["size"] else ""
         path = f", path {a['path']['text']} ({a['path']['summary']})" if a["path"] else ""
         page.heading(f"{_title(a['keyword'], a['name'])}{size}{path}")
         t = page.table("Bits", "Size", "Member")
@@ -414,9 +431,152 @@ def _other(page: _Page, document: dict) -> None:
     page.print(t)
 
 
+# --- content beyond the 2003 text (one function per part) --------------------------------------------
+
+
+def _labels(section: str, attributes: dict[str, str]) -> list[tuple[str, str]]:
+    """(attribute, label) of single entries: the label is the entry's name in cip_tables, and its keyword."""
+    labels = []
+    for keyword, attribute in attributes.items():
+        spec = cip_tables.entry_spec(section, keyword)
+        name = spec.fields[0].name if spec is not None else keyword
+        labels.append((attribute, name if name == keyword else f"{name} ({keyword})"))
+    return labels
+
+
+def _additions(page: _Page, document: dict) -> None:
+    additions = document.get("additions")
+    if not additions:
+        return
+    page.heading("Entries later editions add to [File], [Device], [ParamClass], [Connection Manager]")
+    rows = [(label, _listed(additions[attribute])) for section, attributes in SINGLE_ATTRIBUTES.items()
+            if section in ("File", "Device", "ParamClass", "Connection Manager")
+            for attribute, label in _labels(section, dict(attributes))]
+    page.print(page.pairs(rows))
+
+
+def _listed(value: Any) -> Any:
+    return ", ".join(map(_text, value)) if isinstance(value, list) else value
+
+
+def _capacity(page: _Page, document: dict) -> None:
+    capacity = document["capacity"]
+    if not capacity:
+        return
+    page.heading("Capacity")
+    page.print(page.pairs([(label, capacity[attribute])
+                           for attribute, label in _labels("Capacity", dict(SINGLE_ATTRIBUTES["Capacity"]))]))
+    if capacity["traffic_specs"]:
+        t = page.table("TSpec", "Direction", "Connection size (bytes)", "Packets per second")
+        for spec in capacity["traffic_specs"]:
+            t.add_row(str(spec["number"]), _text(spec["direction"]), _text(spec["connection_size"]),
+                      _text(spec["packets_per_second"]))
+        page.print(t)
+
+
+def _network(page: _Page, document: dict) -> None:
+    network = document["network"]
+    if not network:
+        return
+    tcpip, link = network["tcpip_interface"], network["ethernet_link"]
+    if tcpip and (tcpip["quick_connect_targets"] or tcpip["quick_connect_originators"]):
+        page.heading("TCP/IP Interface: QuickConnect")
+        t = page.table("Entry", "Times")
+        for target in tcpip["quick_connect_targets"]:
+            t.add_row(f"ENetQCT{target['number']}", f"ready for connection {_text(target['ready_for_connection_time'])}"
+                      f", accumulated CIP connection {_text(target['accumulated_connection_time'])}")
+        for originator in tcpip["quick_connect_originators"]:
+            t.add_row(f"ENetQCO{originator['number']}", ", ".join(map(_text, originator["origination_times"])))
+        page.print(t)
+    if link and link["interfaces"]:
+        page.heading("Ethernet Link interfaces")
+        t = page.table("Instance", "Label", "Speed", "Type")
+        for interface in link["interfaces"]:
+            t.add_row(str(interface["instance"]), _text(interface["label"]), _text(interface["speed"]),
+                      _text(interface["interface_type"]))
+        page.print(t)
+    for key, title, section in (("dlr", "Device Level Ring", "DLR Class"),
+                                ("ingress_egress", "Ingress Egress", "Ingress Egress Class")):
+        if network[key]:
+            page.heading(title)
+            page.print(page.pairs([(label, network[key][attribute])
+                                   for attribute, label in _labels(section, dict(SINGLE_ATTRIBUTES[section]))]))
+
+
+def _objects(page: _Page, document: dict) -> None:
+    if not document["object_classes"]:
+        return
+    page.heading("Object classes")
+    t = page.table("Section", "Class", "Object name", "Revision", "Instances", "Attributes and services")
+    for record in document["object_classes"]:
+        t.add_row(f"[{record['section']}]", _class_text(record), _text(record["name"]), _text(record["revision"]),
+                  _instances_text(record), "\n".join(_services_lines(record)))
+    page.print(t)
+
+
+def _class_text(record: dict) -> str:
+    class_id = record["class_id"]
+    text = "" if class_id is None else _joined(f"0x{class_id:02X}", record["class_name"])
+    if record["vendor_id"] is not None:
+        text += f" (vendor {record['vendor_id']})"
+    code = record["class_code"]
+    if code is not None and code != class_id:
+        text += f"; Object_Class_Code 0x{code:02X}"
+    return text
+
+
+def _instances_text(record: dict) -> str:
+    parts = (("max", record["max_instance"]), ("static", record["static_instances"]),
+             ("dynamic", record["max_dynamic_instances"]))
+    return ", ".join(f"{label} {value}" for label, value in parts if value is not None)
+
+
+def _services_lines(record: dict) -> list[str]:
+    lines = [f"{label}: {', '.join(map(_text, record[key]))}" for key, label in (
+        ("class_attributes", "class attributes"), ("instance_attributes", "instance attributes"),
+        ("class_services", "class services"), ("instance_services", "instance services")) if record[key]]
+    return lines + [f"Service_Description{d['number']}: {_text(d['code'])} {_text(d['name'])}".rstrip()
+                    for d in record["service_descriptions"]]
+
+
+def _devicenet(page: _Page, document: dict) -> None:
+    io = document["devicenet"]
+    if not io:
+        return
+    page.heading("DeviceNet I/O")
+    t = page.table("Entry", "Connection types", "Default input", "Default output")
+    t.add_row("Default", _text(io["default"]), "", "")
+    for mode in io["modes"]:
+        t.add_row(mode["keyword"], _text(mode["combination_mask"]), _text(mode["default_input"]),
+                  _text(mode["default_output"]))
+    page.print(t)
+    if io["inputs"] or io["outputs"]:
+        t = page.table("Data", "Name", "Size", "Connection types", "Path")
+        for data in (*io["inputs"], *io["outputs"]):
+            t.add_row(data["keyword"], _text(data["name"]), f"{_text(data['size'])} bytes, "
+                      f"{_text(data['size_in_bits'])} bits", _text(data["connection_mask"]), _path_text(data["path"]))
+        page.print(t)
+    if io["enum_strings"]:
+        page.heading("Enumerated parameters ([EnumPar])")
+        page.print(page.pairs([(keyword, " / ".join(map(_text, strings)))
+                               for keyword, strings in io["enum_strings"].items()]))
+
+
+def _icon(page: _Page, document: dict) -> None:
+    icon = document["icon"]
+    if not icon:
+        return
+    page.heading("Icon (IconContents)")
+    images = "; ".join(f"{i['width']}x{i['height']} {i['encoding'].upper()}"
+                       + (f" {i['bits_per_pixel']}-bit" if i["bits_per_pixel"] else "") for i in icon["images"])
+    page.print(page.pairs([("Format", icon["kind"].upper() if icon["kind"] in ("ico", "bmp", "png") else icon["kind"]),
+                           ("Bytes", icon["bytes"]), ("Images", images), ("Problem", icon["problem"])]))
+
+
 #: The parts of the text, in the order they are printed, by their ``--section`` name.
 _PARTS = {"identity": _identity, "parameters": _parameters, "groups": _groups, "assemblies": _assemblies,
-          "connections": _connections, "ports": _ports, "modular": _modular, "other": _other}
+          "connections": _connections, "ports": _ports, "modular": _modular, "capacity": _capacity,
+          "network": _network, "objects": _objects, "devicenet": _devicenet, "icon": _icon, "other": _other}
 
 
 def render(document: dict, console: Console, sections: tuple[str, ...] = ()) -> None:

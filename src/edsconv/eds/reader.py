@@ -154,7 +154,7 @@ class _Builder(Transformer):
         start = self.token_start(token)
         name = token.value[1:-1]
         section = Section(name=name.strip(), offset=start, source=self.lines)
-        if not tables.SECTION_KEYWORD_RE.fullmatch(name):
+        if not tables.SECTION_KEYWORD_RE.fullmatch(name) and not _named_by_tables(name):
             self.report(SECTION_NAME, f"section name [{name}] uses characters or spacing outside the keyword "
                         "rules of ISO 15745-4 (letters, digits, '_', single inner spaces)", start)
         first = self.seen_sections.get(section.name)
@@ -328,6 +328,13 @@ class _Builder(Transformer):
         unparsed = Unparsed(self.text[start:end].rstrip(), offset=start, source=self.lines)
         section.unparsed.append((len(section.entries), unparsed))
         self._record_statement(start, end, unparsed, [])
+
+
+def _named_by_tables(name: str) -> bool:
+    """A section name the newer CIP tables define as it stands ([TCP/IP Interface Class]): no EDS006."""
+    from edsconv.cip_tables import known  # imported only for the rare name outside the keyword rules
+
+    return name == name.strip() and known(name) is not None
 
 
 def _offset_of(field: Field) -> int:

@@ -102,16 +102,17 @@ SECTION_NAME = rule(
     explanation="""
         A section name uses characters or spacing the keyword rules do not allow:
         letters, digits and `_`, with single spaces between words. A warning, not an
-        error: later CIP editions name object class sections this way themselves
-        (`[TCP/IP Interface Class]`), and 46 of the 61 real files use such names, so
-        tools accept them; a tool that follows the 2003 rules alone rejects them.
+        error: later CIP editions name object class sections this way themselves, 46 of
+        the 61 real files use such names, and tools accept them; a tool that follows the
+        2003 rules alone rejects them. Not reported for the names the newer tables define
+        (`[TCP/IP Interface Class]`, `[EtherNet/IP Security Class]`: edsconv.cip_tables).
     """,
     bad=block("""
-        [TCP/IP Interface Class]
+        [Diagnostics/Extra]
                 Revision = 4;
     """),
     good=block("""
-        [TCPIP Interface Class]
+        [TCP/IP Interface Class]
                 Revision = 4;
     """),
 )

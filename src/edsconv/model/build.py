@@ -39,6 +39,7 @@ from edsconv.model import (
     Rack,
     Reference,
 )
+from edsconv.model.cip_build import attach
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES, set_parameter_field
 from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
 
@@ -209,6 +210,7 @@ class _Builder:
                     handler(entry, entry_spec)
         self.collect_comments()
         self.attach_enums_and_adders()
+        attach(self.device)  # the typed view of the content beyond the 2003 text (model.cip)
         for ref in iter_references(self.device):
             ref.target = self.device.resolve(ref.keyword)
         return self.device

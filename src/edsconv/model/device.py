@@ -24,12 +24,25 @@ import datetime
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, NamedTuple, TypeGuard
+from typing import TYPE_CHECKING, Any, NamedTuple, TypeGuard
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import EdsFile, Entry, Section
 from edsconv.model.values import PathItem, Revision, StringIMember
+
+if TYPE_CHECKING:
+    from edsconv.model.cip import (
+        Additions,
+        Capacity,
+        DeviceLevelRing,
+        DeviceNetIo,
+        EthernetLink,
+        IngressEgress,
+        ObjectClass,
+        TcpIpInterface,
+    )
+    from edsconv.model.icon import Icon
 
 #: The field keyword of C.4.1.5.3: "take this field from the Proxied entry".
 MODULE = tables.MODULE_KEYWORD
@@ -297,13 +310,27 @@ class Assembly:
     number: int
     name: str | None = None
     path: tuple[PathItem, ...] | str | None = None
-    #: bytes
-    size: int | str | None = None
+    #: bytes (an AssemExaN may give a ParamN)
+    size: int | str | Reference | None = None
     descriptor: int | str | None = None
     members: list[AssemblyMember] = field(default_factory=list)
     #: True for a ProxyAssem whose members are the ProxiedAssem's (ModuleMemberList)
     module_member_list: bool = False
     entry: Entry | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def opaque(self) -> bool:
+        """EZ-EDS's opaque assembly: its one member names the assembly itself with the full size
+        (``Assem1 = "Input", "20 04 24 6F 30 03", 128, 0x0000, ,, 1024, Assem1;``). Real tools read it
+        as Size bytes of data whose layout the EDS does not give, not as an assembly that contains
+        itself (checks.object_rules EDS514)."""
+        if len(self.members) != 1:
+            return False
+        member = self.members[0]
+        reference = member.reference
+        full_size = self.size is None or (is_integer(self.size) and 8 * self.size == member.size)
+        return isinstance(reference, Reference) and reference.keyword == self.keyword and reference.bit is None \
+            and is_integer(member.size) and full_size
 
 
 @dataclass(slots=True)
@@ -418,6 +445,9 @@ class GenericEntry:
     keyword: str
     values: list
     entry: Entry | None = field(default=None, compare=False, repr=False)
+    #: for an entry the newer CIP tables define: each field read by its type, (value, ValueProblem or
+    #: None), as model.cip_build.attach read it (the checks reuse it); None otherwise
+    readings: list[tuple[Any, Exception | None]] | None = field(default=None, compare=False, repr=False)
 
 
 @dataclass(slots=True)
@@ -468,6 +498,25 @@ class Device:
     #: fields whose value breaks a notation rule (an error) but has one reading, which the model
     #: holds: (section, entry keyword, 0-based field index) -> the code of the rule it breaks
     erroneous: dict[tuple[str, str, int], str] = field(default_factory=dict, compare=False, repr=False)
+    # --- the same content beyond the 2003 text, typed (model.cip, built by model.cip_build.attach from
+    # extra_entries and other_sections, which the writers write): derived from those, so not compared
+    #: [Capacity]
+    capacity: Capacity | None = field(default=None, compare=False)
+    #: the common object-class entries of each section that has them, by section name
+    object_classes: dict[str, ObjectClass] = field(default_factory=dict, compare=False)
+    #: [TCP/IP Interface Class], [Ethernet Link Class], [DLR Class], [Ingress Egress Class] beyond the common entries
+    tcpip_interface: TcpIpInterface | None = field(default=None, compare=False)
+    ethernet_link: EthernetLink | None = field(default=None, compare=False)
+    dlr: DeviceLevelRing | None = field(default=None, compare=False)
+    ingress_egress: IngressEgress | None = field(default=None, compare=False)
+    #: DeviceNet [IO_Info] and [EnumPar]
+    devicenet: DeviceNetIo | None = field(default=None, compare=False)
+    #: AssemExaN, ProxyAssemExaN, ProxiedAssemExaN of [Assembly], by keyword
+    extended_assemblies: dict[str, Assembly] = field(default_factory=dict, compare=False)
+    #: [Device] IconContents, decoded
+    icon_contents: Icon | None = field(default=None, compare=False)
+    #: the single entries later editions add to [File], [Device], [ParamClass], [Connection Manager]
+    additions: Additions | None = field(default=None, compare=False)
     #: comments of the EDS; not part of the device's meaning (excluded from equality)
     comments: list[CommentNote] = field(default_factory=list, compare=False, repr=False)
     #: the syntax model it was built from (None when built from XML)
@@ -484,9 +533,10 @@ class Device:
         return tables.ETHERNETIP in self.networks
 
     def resolve(self, keyword: str) -> Parameter | Assembly | Connection | GenericEntry | None:
-        """The entry a reference keyword names, in any section (newer-spec entries
-        such as AssemExaN resolve to their generic entry)."""
-        found = self.parameters.get(keyword) or self.assemblies.get(keyword) or self.connections.get(keyword)
+        """The entry a reference keyword names, in any section: AssemExaN its typed Assembly, other
+        newer-spec entries their generic entry."""
+        found = self.parameters.get(keyword) or self.assemblies.get(keyword) or self.connections.get(keyword) \
+            or self.extended_assemblies.get(keyword)
         if found is not None:
             return found
         return next((e for entries in self.extra_entries.values() for e in entries if e.keyword == keyword), None)

@@ -20,7 +20,7 @@ from lxml import etree  # noqa: E402
 
 import edsconv  # noqa: E402
 from edsconv.cli import cli  # noqa: E402
-from edsconv.eds.canonical import device_to_eds  # noqa: E402
+from edsconv.eds.from_model import device_to_eds  # noqa: E402
 from edsconv.eds.source import decode  # noqa: E402
 from edsconv.eds.writer import write  # noqa: E402
 from edsconv.model import Device  # noqa: E402

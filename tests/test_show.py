@@ -10,10 +10,12 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import edsconv
 from edsconv.cli import cli
-from edsconv.cli.show import render
+from edsconv.cli.show import json_text, plain_text, render
 from edsconv.describe import SECTIONS, describe
 from edsconv.model.epath import decode_path
 from edsconv.model.values import PathItem
@@ -21,6 +23,7 @@ from edsconv.model.values import PathItem
 REPO = Path(__file__).resolve().parents[1]
 EXAMPLE = REPO / "corpus" / "examples" / "io_adapter.eds"
 SPEC = sorted((REPO / "corpus" / "spec").glob("*.eds"))
+OWN = sorted((REPO / "corpus").rglob("*.eds"))
 BROKEN = sorted((REPO / "corpus" / "broken").glob("*.eds"))
 SHARED_REAL = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"
 REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
@@ -313,3 +316,65 @@ def test_real_corpus_describes_and_renders():
             render(described, console)
         assert described["identity"]["product_name"] is None or str(
             described["identity"]["product_name"]).strip()[:10] in capture.get(), path.name
+
+
+def _words(text: str) -> list[str]:
+    """The words of a text, its rules (lines of '─', as long as the table is wide) left out."""
+    return [word for word in text.split() if set(word) != {"\u2500"}]
+
+
+def _rich_text(described: dict) -> str:
+    from rich.console import Console
+
+    console = Console(markup=False, highlight=False, width=3000, color_system=None)  # wide: rich wraps nothing
+    with console.capture() as capture:
+        render(described, console)
+    return capture.get()
+
+
+@pytest.mark.parametrize("path", OWN + [p for p in REAL if p.stat().st_size <= 40_000],
+                         ids=lambda p: p.name)
+def test_piped_text_says_what_the_terminal_tables_say(path: Path):
+    described = document(path)
+    plain = plain_text(described)
+    assert _words(plain) == _words(_rich_text(described))
+    assert all(line == line.rstrip() for line in plain.splitlines())
+
+
+def test_piped_text_lays_out_columns_and_rows_of_several_lines(example: dict):
+    lines = plain_text(example, ("groups",)).splitlines()
+    assert lines[:6] == ["Groups",
+                         "Group   Name            Members",
+                         "\u2500" * 48,
+                         "1       Configuration   Param2 Input Filter",
+                         "                        Param3 Fault Action",
+                         "2       Diagnostics     Param4 Temperature Limit"]
+
+
+@pytest.mark.skipif(not REAL, reason="the real corpus is not beside the repository")
+def test_real_corpus_renders_as_piped_text():
+    for path in REAL:
+        described = document(path)
+        name = described["identity"]["product_name"]
+        assert name is None or str(name).strip()[:10] in plain_text(described), path.name
+
+
+# --- JSON as the standard library writes it -------------------------------------------------------
+
+json_values = st.recursive(
+    st.none() | st.booleans() | st.integers() | st.floats() | st.text(),
+    lambda inner: st.lists(inner, max_size=4) | st.tuples(inner, inner)
+    | st.dictionaries(st.text(max_size=5) | st.integers(), inner, max_size=4),
+    max_leaves=20)
+
+
+@settings(max_examples=300, deadline=None)
+@given(json_values)
+def test_json_text_is_what_the_standard_library_writes(value):
+    assert json_text(value) == json.dumps(value, indent=2, ensure_ascii=False)
+
+
+@pytest.mark.parametrize("path", OWN + REAL, ids=lambda p: p.name)
+def test_show_json_of_every_file_is_the_standard_librarys(path: Path):
+    described = document(path)
+    assert json_text(described) == json.dumps(described, indent=2, ensure_ascii=False)

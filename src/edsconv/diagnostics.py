@@ -182,6 +182,9 @@ class Selection:
 
     @classmethod
     def of(cls, select: Iterable[str] = (), ignore: Iterable[str] = ()) -> Selection:
+        select, ignore = tuple(select), tuple(ignore)
+        if not select and not ignore:
+            return EVERYTHING  # without loading every rule module (XML ones import lxml): start-up
         registry = load_rules()
         return cls(tuple(map(registry.resolve, select)), tuple(map(registry.resolve, ignore)))
 

@@ -10,16 +10,21 @@ Comment ownership, one rule for every level: a comment inside an entry belongs
 to the last field (nested fields included) that starts before it, or to the
 entry itself when no field does; a comment on a line of its own between
 statements belongs to the next statement as a leading comment.
+
+An entry read from a file without braces keeps only its place in the text until
+its fields or comments are first asked for (:class:`Entry`); they are then made
+from the text, once, and kept.
 """
 
 from __future__ import annotations
 
 import enum
+import functools
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from typing import Any
 
-from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lexicon import scalar_kind
 from edsconv.eds.source import LineIndex
@@ -81,9 +86,12 @@ class Comment(Located):
         return self.source is not None and self.source.starts_line(self.offset)
 
 
-@dataclass(slots=True)
+@dataclass(frozen=True, slots=True)
 class Scalar:
-    """A number, date, time, bare keyword or ``*``, spelled as in the file."""
+    """A number, date, time, bare keyword or ``*``, spelled as in the file.
+
+    Immutable, so that the reader can give every field of a file with the same spelling one object.
+    """
 
     raw: str
 
@@ -96,17 +104,24 @@ class Scalar:
         return _KINDS[kind]
 
 
-# Table C.4: the letter after the backslash -> the character; \x and \u take hex digits.
-_ESCAPES = {sequence[1:]: char for sequence, char in tables.ESCAPE_SEQUENCES.items()}
-_ESCAPE_SEQUENCE = re.compile("\\\\(" + "".join(f"{sequence[1:]}[0-9A-Fa-f]{{{digits}}}|"
-                                              for sequence, digits in tables.NUMERIC_ESCAPES.items()) + ".)")
+@functools.cache
+def _escapes() -> tuple[re.Pattern[str], dict[str, str]]:
+    """Table C.4: one escape sequence, and the letter after the backslash -> the character.
+
+    Made on first use: reading a file does not need the spec's tables, only a string with a backslash does.
+    """
+    from edsconv import spec_tables as tables
+
+    pattern = re.compile("\\\\(" + "".join(f"{sequence[1:]}[0-9A-Fa-f]{{{digits}}}|"
+                                            for sequence, digits in tables.NUMERIC_ESCAPES.items()) + ".)")
+    return pattern, {sequence[1:]: char for sequence, char in tables.ESCAPE_SEQUENCES.items()}
 
 
 def _unescape(match: re.Match[str]) -> str:
     body = match.group(1)
     if len(body) > 1:
         return chr(int(body[1:], 16))
-    return _ESCAPES.get(body, body)
+    return _escapes()[1].get(body, body)
 
 
 @dataclass(slots=True)
@@ -135,7 +150,7 @@ class String:
         inner = "".join(part[part.index('"') + 1:-1] for part in self.parts)
         if "\\" not in inner:
             return inner
-        return _ESCAPE_SEQUENCE.sub(_unescape, inner)
+        return _escapes()[0].sub(_unescape, inner)
 
 
 @dataclass(slots=True)
@@ -175,19 +190,107 @@ class Field(Located):
         return value.raw
 
 
-@dataclass(slots=True)
 class Entry(Located):
-    """``Keyword = field, field, ... ;`` (C.4.1.2.2.8)."""
+    """``Keyword = field, field, ... ;`` (C.4.1.2.2.8).
 
-    keyword: str
-    fields: list[Field]
-    #: comments between ``=`` and the first field
-    comments: list[Comment] = field(default_factory=list)
-    leading_comments: list[Comment] = field(default_factory=list)
-    offset: int = field(default=0, compare=False)
-    #: offset just after the closing ``;``
-    end_offset: int = field(default=0, compare=False)
-    source: LineIndex | None = field(default=None, compare=False, repr=False)
+    Built in code, or read with braces, an entry holds its fields. Read without braces, it
+    holds only its place in the text (and the comments around it that the reader saw) until
+    ``fields`` or ``comments`` is first used: they are then made from the text
+    (:func:`edsconv.eds.runs.entry_contents`) and kept. Either way it behaves the same.
+    """
+
+    __slots__ = ("keyword", "_fields", "_comments", "_leading_comments", "_trailing_comment",
+                 "offset", "end_offset", "source")
+    __hash__ = None  # type: ignore[assignment]  # mutable, compared by value
+
+    def __init__(self, keyword: str, fields: list[Field], comments: list[Comment] | None = None,
+                 leading_comments: list[Comment] | None = None, offset: int = 0, end_offset: int = 0,
+                 source: LineIndex | None = None) -> None:
+        self.keyword = keyword
+        self._fields: list[Field] | None = fields
+        #: comments between ``=`` and the first field
+        self._comments: list[Comment] | None = [] if comments is None else comments
+        self._leading_comments: list[Comment] | None = leading_comments
+        #: a comment after the ``;`` on its line, kept for the fields not made yet
+        self._trailing_comment: Comment | None = None
+        self.offset = offset
+        #: offset just after the closing ``;``
+        self.end_offset = end_offset
+        self.source = source
+
+    @classmethod
+    def unread(cls, keyword: str, offset: int, end_offset: int, source: LineIndex) -> Entry:
+        """An entry read from ``source`` whose fields and comments are made when first asked for."""
+        entry = cls(keyword, [], None, None, offset, end_offset, source)
+        entry._fields = entry._comments = None
+        return entry
+
+    def _read(self) -> None:
+        from edsconv.eds.runs import entry_contents
+
+        assert self.source is not None  # only unread entries come here
+        self._fields, self._comments = entry_contents(self.source.text, self.offset, self.source,
+                                                      self._trailing_comment)
+        self._trailing_comment = None
+
+    @property
+    def fields(self) -> list[Field]:
+        if self._fields is None:
+            self._read()
+        return self._fields  # type: ignore[return-value]  # made by _read
+
+    @fields.setter
+    def fields(self, fields: list[Field]) -> None:
+        if self._fields is None:
+            self._read()
+        self._fields = fields
+
+    @property
+    def comments(self) -> list[Comment]:
+        """Comments between ``=`` and the first field."""
+        if self._comments is None:
+            self._read()
+        return self._comments  # type: ignore[return-value]  # made by _read
+
+    @comments.setter
+    def comments(self, comments: list[Comment]) -> None:
+        if self._comments is None:
+            self._read()
+        self._comments = comments
+
+    @property
+    def leading_comments(self) -> list[Comment]:
+        if self._leading_comments is None:
+            self._leading_comments = []
+        return self._leading_comments
+
+    @leading_comments.setter
+    def leading_comments(self, comments: list[Comment]) -> None:
+        self._leading_comments = comments
+
+    def attach_trailing_comment(self, comment: Comment) -> None:
+        """The reader's, while the fields are not made: a comment after the ``;`` on the same line."""
+        assert self._fields is None, "only the reader attaches, before anything reads the fields"
+        self._trailing_comment = comment
+
+    @property
+    def is_read(self) -> bool:
+        """False while the fields and comments are still only text (see the class)."""
+        return self._fields is not None
+
+    def _compared(self) -> tuple[Any, ...]:
+        return self.keyword, self.fields, self.comments, self.leading_comments
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        assert isinstance(other, Entry)
+        return self._compared() == other._compared()
+
+    def __repr__(self) -> str:
+        return (f"Entry(keyword={self.keyword!r}, fields={self.fields!r}, comments={self.comments!r}, "
+                f"leading_comments={self.leading_comments!r}, offset={self.offset!r}, "
+                f"end_offset={self.end_offset!r})")
 
     @property
     def end_line(self) -> int:

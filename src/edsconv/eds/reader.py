@@ -62,7 +62,7 @@ MAX_SYNTAX_ERRORS = 100
 MAX_BRACE_DEPTH = 64
 
 _COMMENT = re.compile(r"\$[^\n]*")
-_WHITESPACE_AND_COMMENTS = re.compile(r"(?:[ \t\n\f\v\x1a]|\$[^\n]*)*")
+_WHITESPACE_AND_COMMENTS = re.compile(r"(?:[ \t\n\f\v\x1a]++|\$[^\n]*+)*+")
 _CANOPEN_SECTION = re.compile(r"^[ \t]*\[(?:FileInfo|DeviceInfo|MandatoryObjects|[0-9A-Fa-f]{4})\][ \t]*$",
                               re.MULTILINE | re.IGNORECASE)
 #: How much of the file start is read to tell a CANopen EDS from a CIP EDS.
@@ -70,7 +70,7 @@ _SNIFF_LENGTH = 65536
 _CIP_FILE_SECTION = re.compile(r"^[ \t]*\[File\]", re.MULTILINE)
 # Where parsing resumes after an error: after the next ';', or at a line that
 # starts a section or an entry. Strings and comments are stepped over whole.
-_RESYNC = re.compile(r'L?"(?:[^"\\\n]|\\.)*"?|\$[^\n]*|;|\n(?=[ \t]*(?:\[|[A-Za-z0-9_]+[ \t]*=))')
+_RESYNC = re.compile(r'L?"(?:[^"\\\n]++|\\.)*+"?|\$[^\n]*|;|\n(?=[ \t]*(?:\[|[A-Za-z0-9_]+[ \t]*=))')
 
 #: Words a device engineer understands, for the terminals the parser expected.
 _EXPECTED_WORDS = {

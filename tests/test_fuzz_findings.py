@@ -33,3 +33,19 @@ def test_a_long_run_of_one_token_reads_in_memory_linear_in_a_small_factor(data: 
     # an alternation repeated per character made the regex engine keep ~120 bytes per character
     # (an 11 MB string took 1.9 GB); possessive runs keep none
     assert peak_bytes_per_input_byte(data) < BYTES_PER_INPUT_BYTE
+
+
+def test_an_assumed_semicolon_counts_towards_the_syntax_errors_that_stop_reading() -> None:
+    # each assumed ';' restarts the parser: 20 us per byte of 'K1=1' lines, 44x the corpus average
+    eds = edsconv.parse("[File]\n" + "".join(f"1_K{n} = 1\n" for n in range(150)))
+    codes = [d.code for d in eds.diagnostics]
+    assert codes == ["EDS002"] * 99 + ["EDS001", "EDS014"]
+    assert eds.diagnostics[-1].message == "100 syntax errors; the rest of the file is not read"
+    assert len(eds.sections[0].entries) == 99
+    assert eds.sections[0].unparsed[0][1].text.startswith("1_K99 = 1\n1_K100 = 1\n")  # kept, not lost
+
+
+def test_fewer_assumed_semicolons_do_not_stop_reading() -> None:
+    eds = edsconv.parse("[File]\n" + "".join(f"1_K{n} = 1\n" for n in range(99)))
+    assert [d.code for d in eds.diagnostics] == ["EDS002"] * 99
+    assert len(eds.sections[0].entries) == 99

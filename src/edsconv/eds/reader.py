@@ -33,7 +33,7 @@ _CANOPEN_SECTION = re.compile(r"^[ \t]*\[(?:FileInfo|DeviceInfo|MandatoryObjects
 _SNIFF_LENGTH = 65536
 _CIP_FILE_SECTION = re.compile(r"^[ \t]*\[File\]", re.MULTILINE)
 #: What a statement Lark reads ends with: its first ";" outside braces, strings and comments.
-_STATEMENT_END_PIECE = re.compile(r'L?"(?:[^"\\\n]|\\.)*"|\$[^\n]*|[{};]')
+_STATEMENT_END_PIECE = re.compile(r'L?"(?:[^"\\\n]++|\\.)*+"|\$[^\n]*|[{};]')
 
 
 @contextlib.contextmanager

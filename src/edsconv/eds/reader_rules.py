@@ -220,9 +220,9 @@ UNTERMINATED_STRING = rule(
 TOO_MANY_ERRORS = rule(
     "EDS014", Severity.ERROR, "C.4.1.2.2", "So many syntax errors that reading stopped",
     explanation="""
-        So many syntax errors (100) that reading stopped; the rest of the file is not
-        read. The file is most likely not an EDS, or badly damaged. Fix the first errors
-        reported: they usually cause the others.
+        So many syntax errors (100, a missing `;` included) that reading stopped; the rest
+        of the file is not read. The file is most likely not an EDS, or badly damaged. Fix
+        the first errors reported: they usually cause the others.
     """,
     bad="""
         a file of 120 lines such as

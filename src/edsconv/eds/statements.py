@@ -24,7 +24,7 @@ from edsconv.eds.runs import comments_in
 from edsconv.eds.source import LineIndex
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Section, Unparsed
 
-_WHITESPACE_AND_COMMENTS = re.compile(r"(?:[ \t\n\f\v\x1a]|\$[^\n]*)*")
+_WHITESPACE_AND_COMMENTS = re.compile(r"(?:[ \t\n\f\v\x1a]++|\$[^\n]*+)*+")
 #: C.4.1.2.2.3 (the spec's tables hold it: SECTION_KEYWORD_RE); read on the first section name that is not plain
 _PLAIN_SECTION_NAME = re.compile(r"[A-Za-z0-9_]+")
 

@@ -236,6 +236,17 @@ async def test_an_inline_suppression_silences_the_rule_in_the_editor(client: Lan
     assert [d.code for d in unused] == ["EDS099"]
 
 
+async def test_the_lint_configuration_beside_the_file_applies_in_the_editor(client: LanguageClient, tmp_path):
+    (tmp_path / "edsconv.toml").write_text('ignore = ["EDS301"]\n', encoding="utf-8")
+    (tmp_path / "sub").mkdir()
+    uri = (tmp_path / "sub" / "configured.eds").as_uri()  # walked up from the file, as lint does
+    client.text_document_did_open(types.DidOpenTextDocumentParams(
+        types.TextDocumentItem(uri=uri, language_id="eds", version=1, text=BROKEN)))
+    assert await diagnostics_of(client, uri) == []
+    _, unconfigured = await open_document(client, "unconfigured", BROKEN)
+    assert [d.code for d in unconfigured] == ["EDS301"]
+
+
 async def test_document_symbols_name_parameters_and_assemblies(client: LanguageClient):
     uri, _ = await open_document(client, "symbols", EXAMPLE)
     found = await client.text_document_document_symbol_async(types.DocumentSymbolParams(doc(uri)))

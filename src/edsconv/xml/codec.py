@@ -44,6 +44,7 @@ from edsconv.model import (
     Reference,
     Scaling,
 )
+from edsconv.model.conforms import conforms, declared_type
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.common import EDSCONV, is_xml_text, xml_text
 from edsconv.xml.datamodel import string_value
@@ -296,6 +297,10 @@ def get_path(obj, path: list[str]):
 
 
 def set_path(obj, path: list[str], value) -> None:
+    """Set the model value at ``path``; a value of another type than the model declares there is a
+    TypeError (it would break whatever reads the model later)."""
+    if not conforms(value, declared_type(obj, path)):
+        raise TypeError(f"a {type(value).__name__} does not fit the model there")
     parent = get_path(obj, path[:-1])
     last = path[-1]
     if isinstance(parent, list):

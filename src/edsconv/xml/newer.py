@@ -27,6 +27,7 @@ Sections: ``edsconv:ObjectClass section="..." classId="..."`` for the object cla
 
 from __future__ import annotations
 
+import functools
 import re
 
 from lxml import etree
@@ -113,6 +114,8 @@ def entry_element(table: tables.SectionSpec, generic: GenericEntry) -> etree._El
         elif field_spec is not None and generic.values[index] is not None:
             _write_value(element, spec, field_spec, value)
     decoded = entry_values(element, spec)
+    if decoded == generic.values:
+        return element  # the usual case: the typed values give the fields back as written
     if len(decoded) != len(generic.values):
         element.set("fields", str(len(generic.values)))
         decoded = entry_values(element, spec)
@@ -227,19 +230,26 @@ def _repeated_value(child: etree._Element, field_spec: tables.FieldSpec):
 def eds_spelling(text: str, field_spec: tables.FieldSpec):
     """The EDS spelling of a typed value's text: integers in decimal (hexadecimal for the bit strings),
     strings and paths quoted, keywords, references and reals as they are."""
-    kinds = field_spec.alternatives
+    hex_digits, numeric, references, string = _spelling_plan(field_spec)
     word = collapse(text)  # white space around a number, keyword or reference is no part of it
-    if _INTEGER.fullmatch(word):
-        for kind in kinds:
-            if kind in _HEX_KINDS:
-                return Scalar(f"0x{int(word):0{2 * (tables.DATA_TYPES_BY_NAME[kind].size or 1)}X}")
-        if any(kind in tables.DATA_TYPES_BY_NAME for kind in kinds):
-            return Scalar(word)
-    if any(_REFERENCES[kind].fullmatch(word) for kind in kinds if kind in _REFERENCES):
+    if numeric and _INTEGER.fullmatch(word):
+        return Scalar(f"0x{int(word):0{hex_digits}X}" if hex_digits else word)
+    if any(pattern.fullmatch(word) for pattern in references):
         return Scalar(word)
-    if _STRING_KINDS & set(kinds) and word not in field_spec.choices:
+    if string and word not in field_spec.choices:
         return String((f'"{text}"',))
     return Scalar(word)
+
+
+@functools.cache
+def _spelling_plan(field_spec: tables.FieldSpec) -> tuple[int, bool, tuple[re.Pattern[str], ...], bool]:
+    """How :func:`eds_spelling` spells a field's values: hexadecimal digits of its first bit-string
+    type (0: decimal), whether it takes numbers, its reference patterns, whether it takes strings."""
+    kinds = field_spec.alternatives
+    hex_digits = next((2 * (tables.DATA_TYPES_BY_NAME[kind].size or 1) for kind in kinds if kind in _HEX_KINDS), 0)
+    numeric = any(kind in tables.DATA_TYPES_BY_NAME for kind in kinds)
+    references = tuple(_REFERENCES[kind] for kind in kinds if kind in _REFERENCES)
+    return hex_digits, numeric, references, bool(_STRING_KINDS & set(kinds))
 
 
 def read_section(element: etree._Element) -> GenericSection | None:

@@ -368,7 +368,11 @@ def _padded(values: list[Any], count: int) -> list[Any]:
 
 def attach(device: Device) -> Device:
     """Set the typed view of the content beyond the 2003 text on ``device``, from its
-    ``extra_entries`` and ``other_sections``; returns the device."""
+    ``extra_entries`` and ``other_sections``; returns the device. The view is made anew, so that
+    attaching again (after reading a profile, which attaches) does not add the records twice."""
+    device.capacity = device.tcpip_interface = device.ethernet_link = device.dlr = None
+    device.ingress_egress = device.devicenet = device.icon_contents = device.additions = None
+    device.object_classes, device.extended_assemblies = {}, {}
     builder = _Builder(device)
     for name, table, generic, spec in newer_entries(device):
         builder.entry(name, table, generic, spec)

@@ -132,9 +132,13 @@ def read_field(element):
     raise ValueError(f"unknown field kind {kind!r}")
 
 
+def read_entry(entry) -> GenericEntry:
+    """One ``edsconv:Entry``."""
+    return GenericEntry(entry.get("keyword", ""), [read_field(f) for f in entry if f.tag == EDSCONV + "Field"])
+
+
 def read_entries(parent) -> list[GenericEntry]:
-    return [GenericEntry(entry.get("keyword", ""), [read_field(f) for f in entry if f.tag == EDSCONV + "Field"])
-            for entry in parent if entry.tag == EDSCONV + "Entry"]
+    return [read_entry(entry) for entry in parent if entry.tag == EDSCONV + "Entry"]
 
 
 def read_comment(element) -> CommentNote:

@@ -39,10 +39,12 @@ from edsconv.model import (
     Scaling,
 )
 from edsconv.model.build import iter_references
+from edsconv.model.cip_build import attach
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
 from edsconv.xml.codec import decode, read_comment, read_entries, reference, set_path
 from edsconv.xml.common import EDSCONV
 from edsconv.xml.datamodel import collapse, string_value, token, xsd_date, xsd_time
+from edsconv.xml.newer import placed, read_entry_list, read_section
 from edsconv.xml.safe import XmlDocument
 
 BAD_DEVICE_VALUE = rule(
@@ -112,6 +114,7 @@ def read_device_profile(source: XmlDocument | etree._ElementTree | etree._Elemen
     _read_extensions(reader, body, device)
     for ref in iter_references(device):
         ref.target = device.resolve(ref.keyword)
+    attach(device)  # the typed view of the content beyond the 2003 text, as model.build sets it
     return reader.diagnostics
 
 
@@ -124,15 +127,26 @@ def _read_extensions(reader: _Reader, body: etree._Element, device: Device) -> N
         for element in function:
             try:
                 if element.tag == EDSCONV + "ExtraEntries":
-                    extra.setdefault(element.get("section", ""), []).extend(read_entries(element))
+                    name = element.get("section", "")
+                    extra.setdefault(name, []).extend(read_entry_list(element, name, extension=True))
                 elif element.tag == EDSCONV + "Section":
                     sections.append(GenericSection(element.get("name", ""), read_entries(element)))
+                elif (section := read_section(element)) is not None:
+                    sections.append(section)
                 elif element.tag == EDSCONV + "Comments":
                     comments.extend(read_comment(c) for c in element if c.tag == EDSCONV + "Comment")
                 elif element.tag == EDSCONV + "Values":
                     values.extend(v for v in element if v.tag == EDSCONV + "Value")
             except (ValueError, TypeError, KeyError) as error:
                 reader.report(BAD_EXTENSION, element, f"{etree.QName(element).localname}: {error}")
+    try:
+        entries, placed_sections = placed(body)
+        for position, entry in entries:
+            extra.setdefault("Device", []).insert(position, entry)
+        for position, section in placed_sections:
+            sections.insert(position, section)
+    except (ValueError, TypeError, KeyError) as error:
+        reader.report(BAD_EXTENSION, body, f"a placed edsconv element: {error}")
     for element in values:
         try:
             set_path(device, element.get("path", "").split("."), decode(element))

@@ -46,6 +46,7 @@ from edsconv.xml.device_read import (
     VALUE_TAGS,
     read_schema_part,
 )
+from edsconv.xml.newer import place, section_element, write_entry_list
 
 _NMTOKEN = re.compile(r"[\w.\-:]+")
 _MAIN_CLASS = re.compile("|".join((*tables.CLASSIFICATION_KEYWORDS, tables.XSD_VENDOR_KEYWORD)))
@@ -75,6 +76,7 @@ def device_profile(device: Device, header: Header, *, commnet_handle: bool = Fal
         etree.SubElement(handle, "ProfileIdentification").text = f"{header.identification}-COMM"
         etree.SubElement(handle, "ProfileRevision").text = header.revision
     _write_extensions(function, device)
+    place(body, function)
     decoded = Device()
     read_schema_part(body, decoded)
     patches = [path for part in DEVICE_PROFILE_PARTS
@@ -347,9 +349,13 @@ def _member_text(value) -> str | None:
 
 def _write_extensions(function, device: Device) -> None:
     for name, entries in device.extra_entries.items():
-        write_entries(etree.SubElement(function, EDSCONV + "ExtraEntries", section=name), entries)
+        write_entry_list(etree.SubElement(function, EDSCONV + "ExtraEntries", section=name), name, entries, True)
     for section in device.other_sections:
-        write_entries(etree.SubElement(function, EDSCONV + "Section", name=section.name), section.entries)
+        typed = section_element(section)
+        if typed is not None:
+            function.append(typed)
+        else:
+            write_entries(etree.SubElement(function, EDSCONV + "Section", name=section.name), section.entries)
     if device.comments:
         comments = etree.SubElement(function, EDSCONV + "Comments")
         for note in device.comments:

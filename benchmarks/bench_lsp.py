@@ -15,6 +15,7 @@ hover and definition under 100 ms.
 
 from __future__ import annotations
 
+import argparse
 import asyncio
 import json
 import statistics
@@ -25,7 +26,7 @@ from pathlib import Path
 from lsprotocol import types
 from pygls.lsp.client import LanguageClient
 
-from common import corpus_files, options
+from common import CORPUS, corpus_files
 from edsconv.eds.source import decode
 from edsconv.lsp.analysis import analyse
 from edsconv.lsp.diagnostics import CHANGE_DELAY
@@ -135,8 +136,16 @@ async def run(corpus: Path, repeat: int) -> dict:
     return result
 
 
+def options() -> argparse.Namespace:
+    parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=5, help="timings per request; the best counts (default 5)")
+    parser.add_argument("--corpus", type=Path, default=CORPUS, help=f"real EDS files (default {CORPUS})")
+    parser.add_argument("--json", type=Path, help="also write the numbers to this JSON file")
+    return parser.parse_args()
+
+
 def main() -> None:
-    arguments = options(__doc__, repeat=5)
+    arguments = options()
     result = asyncio.run(run(arguments.corpus, arguments.repeat))
     change, requests = result["change"], result["requests"]
     print(f"largest file {change['file']} ({change['bytes']:,} bytes)")

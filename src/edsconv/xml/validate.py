@@ -337,6 +337,8 @@ _XSD_TYPES = {"Date": "xsd:date (YYYY-MM-DD)", "DateTime": "xsd:dateTime (YYYY-M
               "GregorianYearMonth10": "xsd:gYearMonth (YYYY-MM)"}
 _BAD_DATETIME = re.compile(r"Invalid datetime string (?P<value>'[^']*'|\S+) for <class '(?:[\w.]+\.)?(?P<cls>\w+)'>")
 _PYTHON_CLASS = re.compile(r"<class '(?:[\w.]+\.)?(?P<cls>\w+)'>")
+#: an element as older xmlschema releases (4.0) name it: its Python repr, with a memory address
+_ELEMENT_REPR = re.compile(r"<Element (?:\{[^}]*\})?(?P<name>[^\s>]+) at 0x[0-9a-fA-F]+>")
 _IDENTITY = re.compile(r"duplicated value \((?P<values>.*?),?\) for "
                        r"Xsd(?:11)?(?P<kind>Key|Unique)\(name='(?P<name>[^']*)'\)")
 
@@ -351,6 +353,7 @@ def schema_reason(error: XMLSchemaValidationError) -> str:
     reason = _BAD_DATETIME.sub(lambda m: f"{m['value']} is not a valid {_XSD_TYPES.get(m['cls'], m['cls'])}", reason)
     reason = _IDENTITY.sub(lambda m: f"the value {m['values']} appears more than once, but the schema's "
                            f"{m['kind'].lower()} constraint {m['name']} requires each to be unique", reason)
+    reason = _ELEMENT_REPR.sub(lambda m: f"<{m['name']}>", reason)
     return _PYTHON_CLASS.sub(lambda m: _XSD_TYPES.get(m["cls"], m["cls"]), reason)
 
 

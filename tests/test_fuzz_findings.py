@@ -49,3 +49,15 @@ def test_fewer_assumed_semicolons_do_not_stop_reading() -> None:
     eds = edsconv.parse("[File]\n" + "".join(f"1_K{n} = 1\n" for n in range(99)))
     assert [d.code for d in eds.diagnostics] == ["EDS002"] * 99
     assert len(eds.sections[0].entries) == 99
+
+
+@pytest.mark.parametrize(("text", "problem"), [
+    ("AAAB=AAA", "'=' pads only the end of base64 text"),
+    ("AA*B", "'*' is not a base64 character"),
+])
+def test_icon_contents_that_is_not_base64_says_why(text: str, problem: str) -> None:
+    # found by fuzzing eds2xml: padding before the end made the search for the bad character fail
+    from edsconv.model.icon import decode_icon
+
+    icon = decode_icon(text)
+    assert (icon.kind, icon.problem) == ("not base64", problem)

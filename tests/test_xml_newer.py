@@ -14,6 +14,7 @@ from lxml import etree
 
 import edsconv
 from conftest import REPO
+from edsconv.eds.from_model import device_to_eds
 from edsconv.model import Device
 from edsconv.xml.common import EDSCONV, Header
 from edsconv.xml.convert import profile_documents
@@ -168,3 +169,27 @@ def test_a_typed_element_of_no_entry_is_reported():
     problems = read_device_profile(root, Device())
     assert [p.code for p in problems] == ["XML202"]
     assert "NoSuchEntry" in problems[0].message
+
+
+@pytest.mark.parametrize("spelling", ["", "a;b", "1 2"])
+def test_a_spelling_that_is_no_eds_scalar_is_reported_not_written(spelling: str):
+    # found by fuzzing xml2eds: an empty spelling became an empty field the typed model could not read
+    device, root = device_profile(CIP / "capacity_clean.eds")
+    root.find("ProfileBody/DeviceFunction/e:Capacity/e:ConnOverhead", NS).set("spelling", spelling)
+    back = Device()
+    problems = read_device_profile(root, back)
+    assert [p.code for p in problems] == ["XML202"]
+    assert back.capacity is None or back.capacity.connection_overhead is None
+    edsconv.analyse(device_to_eds(back))  # and what was read converts without a fault
+
+
+
+def test_a_repeated_field_of_empty_text_is_reported():
+    # found by fuzzing xml2eds: a service element of no code read as an empty field
+    device, root = device_profile(CIP / "network_objects_clean.eds")
+    service = root.find(".//e:ObjectClass[@section='TCP/IP Interface Class']/e:Instance_Services/e:Service", NS)
+    service.tag = EDSCONV + "Other"
+    service.attrib.clear()
+    back = Device()
+    assert [p.code for p in read_device_profile(root, back)] == ["XML202"]
+    edsconv.analyse(device_to_eds(back))

@@ -57,7 +57,9 @@ def decode_icon(text: str) -> Icon:
     """What the base64 ``text`` of an IconContents holds (white space between parts is ignored)."""
     compact = _WHITE_SPACE.sub("", text)
     if not _BASE64.fullmatch(compact):
-        bad = next(c for c in compact if not re.fullmatch(r"[A-Za-z0-9+/=]", c))
+        bad = next((c for c in compact if not re.fullmatch(r"[A-Za-z0-9+/=]", c)), None)
+        if bad is None:  # every character is one of base64's, but '=' stands before the end
+            return Icon(None, "not base64", problem="'=' pads only the end of base64 text")
         return Icon(None, "not base64", problem=f"{bad!r} is not a base64 character")
     try:
         data = base64.b64decode(compact, validate=True)

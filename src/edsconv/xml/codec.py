@@ -128,8 +128,16 @@ def read_field(element):
         parts = tuple(get_text(part) for part in element if part.tag == EDSCONV + "Part")
         return String(parts or (get_text(element),))
     if kind == "scalar":
-        return Scalar(get_text(element))
+        return eds_scalar(get_text(element))
     raise ValueError(f"unknown field kind {kind!r}")
+
+
+def eds_scalar(text: str) -> Scalar:
+    """``text`` as an EDS scalar; ValueError when no EDS scalar is spelled so (an empty text, ``a;b``):
+    written into an EDS it would not read back as the one field it was."""
+    scalar = Scalar(text)
+    scalar.kind  # noqa: B018 - raises ValueError for a text that is no scalar
+    return scalar
 
 
 def read_entry(entry) -> GenericEntry:

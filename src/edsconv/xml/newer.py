@@ -39,7 +39,7 @@ from edsconv.model import GenericEntry, GenericSection
 from edsconv.model.cip import Service
 from edsconv.model.cip_build import reading, section_table
 from edsconv.model.values import PathItem
-from edsconv.xml.codec import float_text, read_entry, read_field, write_entries, write_field
+from edsconv.xml.codec import eds_scalar, float_text, read_entry, read_field, write_entries, write_field
 from edsconv.xml.common import EDSCONV, is_xml_text
 from edsconv.xml.datamodel import collapse, string_value
 
@@ -192,7 +192,7 @@ def entry_values(element: etree._Element, spec: tables.EntrySpec) -> list:
     if _single(spec):
         spelling, text = element.get("spelling"), element.get("value")
         if spelling is not None:
-            values[0] = Scalar(spelling)
+            values[0] = eds_scalar(spelling)
         elif text is not None:
             values[0] = eds_spelling(text, spec.fields[0])
     else:
@@ -208,7 +208,7 @@ def entry_values(element: etree._Element, spec: tables.EntrySpec) -> list:
         elif spec.repeating and child.tag != EDSCONV + "Field":
             tail_spec = spec.field_at(position + 1)
             if child.get("spelling") is not None:
-                values[position] = Scalar(child.get("spelling", ""))
+                values[position] = eds_scalar(child.get("spelling", ""))
             elif tail_spec is not None and child.get("none") != "true":
                 values[position] = _repeated_value(child, tail_spec)
             position += 1
@@ -223,7 +223,7 @@ def _repeated_value(child: etree._Element, field_spec: tables.FieldSpec):
         if child.get("all") == "true":
             return [code, Scalar("*")]
         attributes = child.get("attributes")
-        return [code, *(Scalar(a) for a in attributes.split())] if attributes else code
+        return [code, *(eds_scalar(a) for a in attributes.split())] if attributes else code
     return eds_spelling(string_value(child), field_spec)
 
 
@@ -238,7 +238,7 @@ def eds_spelling(text: str, field_spec: tables.FieldSpec):
         return Scalar(word)
     if string and word not in field_spec.choices:
         return String((f'"{text}"',))
-    return Scalar(word)
+    return eds_scalar(word)
 
 
 @functools.cache

@@ -268,11 +268,6 @@ def parameter_field_type(attribute: str) -> str:
     return tables.PARAM_FIELDS[PARAMETER_FIELD_ATTRIBUTES.index(attribute)].alternatives[0]
 
 
-def set_parameter_field(parameter: Parameter, attribute: str, value: Any) -> None:
-    record, _, name = attribute.rpartition(".")
-    setattr(parameter.scaling if record else parameter, name, value)
-
-
 @dataclass(slots=True)
 class ParameterGroup:
     """GroupN of [Groups] (Table C.19)."""

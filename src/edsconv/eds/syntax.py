@@ -229,7 +229,7 @@ class Entry(Located):
         from edsconv.eds.runs import entry_contents
 
         assert self.source is not None  # only unread entries come here
-        self._fields, self._comments = entry_contents(self.source.text, self.offset, self.source,
+        self._fields, self._comments = entry_contents(self.source.text, self.offset, self.end_offset, self.source,
                                                       self._trailing_comment)
         self._trailing_comment = None
 

@@ -9,8 +9,9 @@ diagnostics on the field; the structural checks live in :mod:`edsconv.checks`.
 from __future__ import annotations
 
 import functools
+import operator
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -41,7 +42,7 @@ from edsconv.model import (
 )
 from edsconv.model.cip_build import attach
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
-from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
+from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
 
 OBSOLETE_DATA_TYPE = rule(
     "EDS112", Severity.WARNING, "C.4.1.4.6", "A parameter names its data type by an obsolete Table C.16 identifier",
@@ -89,6 +90,17 @@ class _Plan:
     names: str
     #: a bare word may be a reference or a keyword (else only a proxy's Module words are read as words)
     words: bool
+    #: kept as written (ParamDataType, Integer, PortSpecific: the data type is not known here)
+    kept: bool
+    #: values.convert of ``data_type``, chosen once (None: no converter, convert says so)
+    converter: Callable[[Value], Any] | None
+
+
+def _converter(data_type: str | None) -> Callable[[Value], Any] | None:
+    try:
+        return converter_of(data_type) if data_type is not None else None
+    except KeyError:
+        return None
 
 
 @functools.cache
@@ -97,9 +109,11 @@ def _plan(type_name: str) -> _Plan:
     data_types = [k for k in kinds if k not in _REFERENCE and k not in ("MemberKeyword", "Empty", "EPATH")]
     names = " or ".join(kind.removesuffix("Ref") + "N" if kind in _REFERENCE else kind for kind in kinds)
     references = tuple(_REFERENCE[k] for k in kinds if k in _REFERENCE)
-    return _Plan(references, "AssemRef" in kinds, "MemberKeyword" in kinds, "EPATH" in kinds,
-                 data_types[0] if data_types else None, names,
-                 bool(references) or "AssemRef" in kinds or "MemberKeyword" in kinds)
+    data_type = data_types[0] if data_types else None
+    kept = data_type in ("ParamDataType", "Integer", "PortSpecific")
+    return _Plan(references, "AssemRef" in kinds, "MemberKeyword" in kinds, "EPATH" in kinds, data_type, names,
+                 bool(references) or "AssemRef" in kinds or "MemberKeyword" in kinds, kept,
+                 None if kept else _converter(data_type))
 
 
 #: FieldSpec types whose fields are kept as written (:func:`plain`) by :meth:`_Builder.fields`
@@ -205,8 +219,10 @@ class _Builder:
             return to_path(value, allow_references=True)
         if plan.data_type is None:
             raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {plain(value)!r}")
-        if plan.data_type in ("ParamDataType", "Integer", "PortSpecific"):
+        if plan.kept:
             return plain(value)
+        if plan.converter is not None:
+            return plan.converter(value)
         return convert(value, plan.data_type)
 
     def fields(self, entry: Entry, spec: tables.EntrySpec, *, proxy: bool = False) -> list[Any]:
@@ -260,8 +276,11 @@ class _Builder:
                 keyword = entry.keyword
                 notes.extend(CommentNote(section.name, keyword, None, c.text, True) for c in entry.leading_comments)
                 notes.extend(CommentNote(section.name, keyword, None, c.text) for c in entry.comments)
-                for index, item in enumerate(entry.fields):
-                    # most fields have no comment: test before making a generator for them
+                fields = entry.fields
+                # most entries have neither comments nor groups: tell them in C, without a loop in Python
+                if not any(map(_COMMENTS_OF, fields)) and Group not in map(type, map(_VALUE_OF, fields)):
+                    continue
+                for index, item in enumerate(fields):
                     if item.comments:
                         notes.extend(CommentNote(section.name, keyword, index, c.text) for c in item.comments)
                     if item.value.__class__ is Group:  # comments inside a group go with the group's field
@@ -442,6 +461,10 @@ class _Builder:
             modular.query = Query(*v[:4])
         else:
             setattr(modular, SINGLE_ENTRY_ATTRIBUTES["Modular"][keyword], self.single(entry, spec))
+
+
+_COMMENTS_OF = operator.attrgetter("comments")
+_VALUE_OF = operator.attrgetter("value")
 
 
 def iter_references(device: Device) -> Iterator[Reference]:

@@ -650,11 +650,11 @@ CONVERTERS = {
 
 def convert(value: Value, type_name: str):
     """Convert a field value to the Python value of ``type_name``."""
-    return _converter(type_name)(value)
+    return converter_of(type_name)(value)
 
 
 @functools.cache
-def _converter(type_name: str) -> Callable[[Value], Any]:
+def converter_of(type_name: str) -> Callable[[Value], Any]:
     """The function :func:`convert` calls for ``type_name``, chosen once per type."""
     converter = CONVERTERS.get(type_name)
     if converter is not None:

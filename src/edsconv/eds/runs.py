@@ -152,20 +152,21 @@ def split_fields(pieces: list[str], start: int, closer: int, source: LineIndex) 
     field. An empty field stands at the comma that ends it; an empty last field at the
     ``closer`` (the ``;``).
     """
-    fields = []
+    fields: list[Field] = []
+    append = fields.append
     position = start
+    raw = ""
     for piece in pieces:
         raw = piece.strip(TRIVIA_CHARACTERS)  # the TRIVIA before and after the RUN may hold a Ctrl-Z
         if not raw:
-            fields.append(Field(None, [], position + len(piece), source))
-        else:
+            append(Field(None, [], position + len(piece), source))
+        elif raw[-1] == '"':
             offset = position + piece.index(raw[0])
-            if raw[-1] == '"':
-                field = Field(None, [], offset, source)
-                field.value = string_value(raw, offset, field.comments, source)
-                fields.append(field)
-            else:
-                fields.append(Field(scalar(raw), [], offset, source))
+            field = Field(None, [], offset, source)
+            field.value = string_value(raw, offset, field.comments, source)
+            append(field)
+        else:
+            append(Field(scalar(raw), [], position + piece.index(raw[0]), source))
         position += len(piece) + 1
     if not raw:
         fields[-1].offset = closer

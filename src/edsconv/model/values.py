@@ -602,8 +602,16 @@ def to_path(value: Value, allow_references: bool = False) -> tuple[PathItem, ...
     return path_items(to_text(value), allow_references)
 
 
+#: the item of each two-digit hexadecimal byte, by its spelling (items are immutable: one of each)
+_BYTE_ITEMS = {f"{high}{low}": PathItem(byte=int(f"{high}{low}", 16))
+               for high in "0123456789ABCDEFabcdef" for low in "0123456789ABCDEFabcdef"}
+
+
 def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]:
     """The items of a path's text, as an EDS string or an XML profile holds it."""
+    tokens = text.split()  # the white space _PATH_TOKEN's \s skips
+    if all(map(_BYTE_ITEMS.__contains__, tokens)):  # bytes only, as most paths: no regex per byte
+        return tuple(map(_BYTE_ITEMS.__getitem__, tokens))
     items: list[PathItem] = []
     position = 0
     stripped_end = len(text.rstrip())

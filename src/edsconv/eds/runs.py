@@ -106,17 +106,17 @@ def scan_run(text: str, start: int, end: int, source: LineIndex, fields: list[Fi
                 fields.append(current)
             if string is not None:
                 offset = piece.start(2)
-                current = Field(None, [], offset, source)
-                current.value = string_value(string, offset, current.comments, source)
+                between: list[Comment] = []  # comments between the parts of a concatenated string
+                current = Field(string_value(string, offset, between, source), between or None, offset, source)
                 if report is not None:
                     for problem in string_problems(string, offset):
                         report(*problem)
             else:
-                current = Field(scalar(raw), [], piece.start(3), source)
+                current = Field(scalar(raw), None, piece.start(3), source)
             flat.append(current)
         if comma is not None:
             if current is None:
-                current = Field(None, [], piece.start(4), source)
+                current = Field(None, None, piece.start(4), source)
                 flat.append(current)
             fields.append(current)
             current = None
@@ -159,14 +159,12 @@ def split_fields(pieces: list[str], start: int, closer: int, source: LineIndex) 
     for piece in pieces:
         raw = piece.strip(TRIVIA_CHARACTERS)  # the TRIVIA before and after the RUN may hold a Ctrl-Z
         if not raw:
-            append(Field(None, [], position + len(piece), source))
+            append(Field(None, None, position + len(piece), source))
         elif raw[-1] == '"':
             offset = position + piece.index(raw[0])
-            field = Field(None, [], offset, source)
-            field.value = string_value(raw, offset, field.comments, source)
-            append(field)
+            append(Field(string_value(raw, offset, [], source), None, offset, source))  # no "$": no comment
         else:
-            append(Field(scalar(raw), [], position + piece.index(raw[0]), source))
+            append(Field(scalar(raw), None, position + piece.index(raw[0]), source))
         position += len(piece) + 1
     if not raw:
         fields[-1].offset = closer
@@ -204,7 +202,7 @@ def _scanned_contents(text: str, body_start: int, closer: int, source: LineIndex
     comments: list[Comment] = []
     current = scan_run(text, body_start, closer, source, fields, None, flat, leading=comments)
     if current is None:
-        current = Field(None, [], closer, source)
+        current = Field(None, None, closer, source)
         flat.append(current)
     fields.append(current)
     if trailing is not None:

@@ -278,10 +278,10 @@ class _Builder:
                 notes.extend(CommentNote(section.name, keyword, None, c.text) for c in entry.comments)
                 fields = entry.fields
                 # most entries have neither comments nor groups: tell them in C, without a loop in Python
-                if not any(map(_COMMENTS_OF, fields)) and Group not in map(type, map(_VALUE_OF, fields)):
+                if not any(map(_HAS_COMMENTS, fields)) and Group not in map(type, map(_VALUE_OF, fields)):
                     continue
                 for index, item in enumerate(fields):
-                    if item.comments:
+                    if item.has_comments:
                         notes.extend(CommentNote(section.name, keyword, index, c.text) for c in item.comments)
                     if item.value.__class__ is Group:  # comments inside a group go with the group's field
                         notes.extend(CommentNote(section.name, keyword, index, c.text)
@@ -463,7 +463,7 @@ class _Builder:
             setattr(modular, SINGLE_ENTRY_ATTRIBUTES["Modular"][keyword], self.single(entry, spec))
 
 
-_COMMENTS_OF = operator.attrgetter("comments")
+_HAS_COMMENTS = operator.attrgetter("has_comments")
 _VALUE_OF = operator.attrgetter("value")
 
 

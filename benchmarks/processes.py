@@ -11,6 +11,7 @@ byte.
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -78,9 +79,14 @@ def peak_memory(step: str, path: Path) -> dict:
             "failed": run["failed"]}
 
 
+#: the environment of the timed commands: bytecode caches written and used, as an installed package has them
+#: (pip compiles them when it installs; with PYTHONDONTWRITEBYTECODE every run compiles every module again)
+_WARM_ENVIRONMENT = {name: value for name, value in os.environ.items() if name != "PYTHONDONTWRITEBYTECODE"}
+
+
 def wall(command: list[str]) -> float:
     start = time.perf_counter()
-    subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False, env=_WARM_ENVIRONMENT)
     return time.perf_counter() - start
 
 
@@ -92,7 +98,7 @@ def small_files(corpus: Path) -> tuple[Path, Path]:
 
 
 def startup(corpus: Path, repeat: int) -> list[dict]:
-    """Warm wall time (best of ``repeat``, after one run that fills the caches) of small commands."""
+    """Warm wall time (best of ``repeat``, after one run that fills the caches, bytecode too) of small commands."""
     script = shutil.which("edsconv", path=str(Path(sys.executable).parent)) or "edsconv"
     eds, profile = small_files(corpus)
     commands = {"python -c pass (interpreter alone)": [sys.executable, "-c", "pass"],

@@ -140,6 +140,21 @@ def test_random_text_reads_the_same_both_ways(text):
     assert_same_reading(text)
 
 
+#: pieces of entries with comments, strings with '$' and ',' among them (runs.entry_contents scans them)
+COMMENTED = ["$ c\n", " $c,d\n", '"a$b"', '"a" $ c\n "b"', '"x,y"', ",", ", ", ",,", "0x10", "Param1", " ", "\n",
+             '""', '"q" "r"', "\x1a", "1", '"$"', '"\\n"']
+
+
+@SETTINGS
+@given(st.lists(st.sampled_from(COMMENTED), max_size=20).map("".join))
+@example('"a" $ c\n "b", 1 $d\n,')
+@example('$ lead\n , 2 $ c\n')
+@example('"US$", 1 $ price\n')
+def test_commented_entries_read_the_same_both_ways(body):
+    """An entry whose fields carry comments (EZ-EDS), its fields made on first use, against Lark."""
+    assert_same_reading(f"[S]\nA = {body};  $ after\nB = 1;\n")
+
+
 @SETTINGS
 @given(st.lists(st.tuples(st.integers(0, len(SAMPLE)), st.integers(0, 12), st.sampled_from([*PIECES, ""])),
                 min_size=1, max_size=4))

@@ -17,6 +17,7 @@ plus the reference and keyword kinds of :data:`FIELD_VALUE_KINDS`.
 from __future__ import annotations
 
 import enum
+import functools
 import math
 import re
 from collections.abc import Mapping
@@ -1096,6 +1097,8 @@ def section_spec(name: str) -> SectionSpec | None:
     return VENDOR_SECTION if VENDOR_SECTION_KEYWORD_RE.fullmatch(name) else None
 
 
+# cached, as entry_spec: every consumer of an entry (model, checks, show) asks again
+@functools.lru_cache(maxsize=1 << 16)
 def split_numbered(keyword: str) -> tuple[str, int | None]:
     """``"Param12"`` -> ``("Param", 12)``; un-numbered keywords -> ``(keyword, None)``."""
     m = _NUMBERED.fullmatch(keyword)
@@ -1107,6 +1110,7 @@ def instance_number(keyword: str) -> int:
     return split_numbered(keyword)[1] or 0
 
 
+@functools.lru_cache(maxsize=1 << 16)
 def entry_spec(section: str, keyword: str) -> EntrySpec | None:
     """Spec of an entry keyword in a section, resolving numbered families
     (``"Param12"`` -> Param, ``"ProxyParamSizeAdder4"``, ``"Rack1"`` ...)."""

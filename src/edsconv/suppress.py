@@ -135,4 +135,5 @@ def _comment_groups(eds: EdsFile) -> Iterator[tuple[list[Comment], tuple[int, in
 
 
 def _entry_comments(entry: Entry) -> list[Comment]:
-    return [*entry.leading_comments, *entry.comments, *(c for item in entry.walk_fields() for c in item.comments)]
+    return [*entry.leading_comments, *entry.comments,
+            *(c for item in entry.walk_fields() if item.has_comments for c in item.comments)]

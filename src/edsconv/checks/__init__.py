@@ -77,6 +77,7 @@ def load_checks() -> tuple[Check, ...]:
 def run_checks(eds: EdsFile, device: Device, selection: Selection = EVERYTHING) -> Iterator[Diagnostic]:
     """The diagnostics of every check whose rules ``selection`` keeps any of (the others do not run)."""
     context = Context(eds, device)
+    everything = selection.everything
     for check_ in load_checks():
-        if selection.any_of(check_.rules):
+        if everything or selection.any_of(check_.rules):
             yield from check_.run(context)

@@ -16,6 +16,7 @@ Classification] naming EtherNetIP.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Iterator
 
@@ -47,7 +48,7 @@ from edsconv.checks.structure_rules import (
     VENDOR_SECTION_NOT_LAST,
 )
 from edsconv.diagnostics import Diagnostic, Rule
-from edsconv.eds.syntax import Entry, Field, Scalar, Section, String
+from edsconv.eds.syntax import Entry, Field, Group, Scalar, Section, String
 from edsconv.model.build import iter_references
 from edsconv.model.values import CONTROL_CHARACTER, NULL_TERMINATOR, string_flaw
 
@@ -341,17 +342,14 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
     """Required fields present and not empty; no fields beyond the layout; reserved fields empty."""
     for entry, spec in _specified_entries(ctx):
         missing = []
-        for required in spec.fields:
-            if required.presence is not REQUIRED or spec.keyword in _PROXIED_FAMILIES:
-                continue
-            if required.repeats and (spec.keyword in _COUNTED_TAILS or required is not spec.repeating[0]):
-                continue  # a required repeating tail needs its first field (a RackN one Legal Slot)
+        fields = entry.fields
+        for required in _required_fields(spec):
             index = required.number - 1
-            if index >= len(entry.fields):
+            if index >= len(fields):
                 missing.append(f"{required.number} ({required.name})")
-            elif entry.fields[index].value is None:
+            elif fields[index].value is None:
                 yield ctx.at(REQUIRED_FIELD_EMPTY, f"{entry.keyword} field {required.number} "
-                                                   f"({required.name}) is required but empty", entry.fields[index])
+                                                   f"({required.name}) is required but empty", fields[index])
         if missing:
             yield ctx.at(REQUIRED_FIELD_EMPTY, f"{entry.keyword} lacks required field{'s' if len(missing) > 1 else ''}"
                                                f" {', '.join(missing)}", entry)
@@ -363,13 +361,29 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
             elif len(entry.fields) > (cip_tables.known_field_count(spec) or 0):
                 yield ctx.at(FIELDS_BEYOND_2003, f"{entry.keyword} has {len(entry.fields)} fields; ISO 15745-4:2003 "
                                                  f"defines {spec.max_fields} (later fields kept)", extra)
-        for index, item in enumerate(entry.fields):
-            field_spec = spec.field_at(index + 1)
-            if field_spec is not None and field_spec.presence is RESERVED and item.value is not None \
-                    and item.raw != tables.MODULE_MEMBER_LIST_KEYWORD:  # EDS406 says what is wrong with it
+        for index, field_spec in _reserved_fields(spec, len(fields)):
+            item = fields[index]
+            if item.value is not None and item.raw != tables.MODULE_MEMBER_LIST_KEYWORD:  # EDS406 says what is wrong
                 yield ctx.at(RESERVED_FIELD_SET, f"{entry.keyword} field {index + 1} is reserved and shall be "
                                                  f"empty (Table {field_spec.table}); {item.raw or 'its value'} "
                                                  f"is ignored", item)
+
+
+@functools.lru_cache(maxsize=256)
+def _required_fields(spec: tables.EntrySpec) -> tuple[tables.FieldSpec, ...]:
+    """The fields of a ``spec`` entry that :func:`field_counts` requires to be present and not empty."""
+    if spec.keyword in _PROXIED_FAMILIES:
+        return ()
+    # a required repeating tail needs its first field (a RackN one Legal Slot)
+    return tuple(required for required in spec.fields if required.presence is REQUIRED and not (
+        required.repeats and (spec.keyword in _COUNTED_TAILS or required is not spec.repeating[0])))
+
+
+@functools.lru_cache(maxsize=1024)
+def _reserved_fields(spec: tables.EntrySpec, count: int) -> tuple[tuple[int, tables.FieldSpec], ...]:
+    """(0-based index, spec) of the reserved fields among the first ``count`` fields of a ``spec`` entry."""
+    return tuple((index, field_spec) for index in range(count)
+                 if (field_spec := spec.field_at(index + 1)) is not None and field_spec.presence is RESERVED)
 
 
 #: (entry family, field number) of fields whose value a rule of their own checks, so that one fault has
@@ -377,17 +391,31 @@ def field_counts(ctx: Context) -> Iterator[Diagnostic]:
 _OWN_RULE_FIELDS = frozenset({("Port", 1), ("Query", 2)})
 
 
+@functools.lru_cache(maxsize=1024)
+def _choice_fields(spec: tables.EntrySpec, count: int) -> tuple[tuple[int, tables.FieldSpec, bool], ...]:
+    """(0-based index, spec, is a Keyword field) of the fields among the first ``count`` of a ``spec``
+    entry that :func:`field_keywords` checks: keyword fields and fields with choices."""
+    found = []
+    for index in range(count):
+        field_spec = spec.field_at(index + 1)
+        if field_spec is None or (spec.keyword, index + 1) in _OWN_RULE_FIELDS:
+            continue
+        is_keyword_field = "Keyword" in field_spec.alternatives
+        if is_keyword_field or field_spec.choices:
+            found.append((index, field_spec, is_keyword_field))
+    return tuple(found)
+
+
 @check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
     for entry, spec in _specified_entries(ctx):
-        for index, item in enumerate(entry.fields):
-            field_spec = spec.field_at(index + 1)
+        fields = entry.fields
+        for index, field_spec, is_keyword_field in _choice_fields(spec, len(fields)):
+            item = fields[index]
             word = _word(item)
-            if field_spec is None or word is None or word in spec.proxy_keywords \
-                    or (spec.keyword, index + 1) in _OWN_RULE_FIELDS:
+            if word is None or word in spec.proxy_keywords:
                 continue
-            is_keyword_field = "Keyword" in field_spec.alternatives
             problem = _keyword_problem(word) if is_keyword_field and isinstance(item.value, Scalar) else None
             if problem is not None:
                 yield ctx.at(problem[0], f"{entry.keyword} field {index + 1}: {word}: {problem[1]}", item)
@@ -424,8 +452,11 @@ def string_characters(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.3.2 and C.4.1.3.3.1: no control characters and no null terminator, in every string of the file."""
     for section in ctx.eds.sections:
         for entry in section.entries:
-            for item in entry.walk_fields():
-                flaw = string_flaw(item.value) if isinstance(item.value, String) else None
+            fields = entry.fields
+            # walk_fields only for an entry with brace groups: a flat entry's fields are its walk
+            for item in entry.walk_fields() if any(f.value.__class__ is Group for f in fields) else fields:
+                value = item.value
+                flaw = string_flaw(value) if value.__class__ is String else None
                 if flaw is not None:
                     yield ctx.at(flaw[0], f"{entry.keyword}: {flaw[1]}", item)
 

@@ -10,6 +10,7 @@ does with an indent, in less time.
 
 from __future__ import annotations
 
+import itertools
 import json
 from typing import TYPE_CHECKING, Any
 
@@ -122,32 +123,36 @@ class PlainTable:
         self.headers = list(columns)
         self.show_header = show_header
         self.columns = [_Column() for _ in columns]
-        self.rows: list[list[list[str]]] = []
+        self.rows: list[list[str]] = []
 
     def add_column(self, header: str = "", **options: Any) -> None:
         self.headers.append(header)
         self.columns.append(_Column())
 
     def add_row(self, *cells: str) -> None:
-        self.rows.append([(cell if cell.isprintable() else _printable(cell)).split("\n") for cell in cells])
+        """A row; a cell of several lines makes as many lines of the table, the other cells blank below."""
+        row = [cell if cell.isprintable() else _printable(cell) for cell in cells]
+        if not any("\n" in cell for cell in row):
+            self.rows.append(row)
+            return
+        split = [cell.split("\n") for cell in row]
+        for index in range(max(map(len, split))):
+            self.rows.append([cell[index] if index < len(cell) else "" for cell in split])
 
     def lines(self) -> list[str]:
-        """The header, a rule under it, and every row (a cell of several lines makes a row of several)."""
+        """The header, a rule under it, and every row."""
         widths = [len(header) if self.show_header else 0 for header in self.headers]
-        for row in self.rows:
-            for column, cell in enumerate(row):
-                widths[column] = max(widths[column], *map(len, cell))
+        for column, cells in enumerate(itertools.zip_longest(*self.rows, fillvalue="")):
+            widths[column] = max(widths[column], *map(len, cells))
         out = []
         if self.show_header:
             out.append(self._line(self.headers, widths))
             out.append("\u2500" * (sum(widths) + len(self.GAP) * (len(widths) - 1)))
-        for row in self.rows:
-            for index in range(max(map(len, row))):
-                out.append(self._line([cell[index] if index < len(cell) else "" for cell in row], widths))
+        out += map(self._line, self.rows, itertools.repeat(widths))
         return out
 
     def _line(self, cells: list[str], widths: list[int]) -> str:
-        return self.GAP.join(cell.ljust(width) for cell, width in zip(cells, widths, strict=False)).rstrip()
+        return self.GAP.join(map(str.ljust, cells, widths)).rstrip()
 
 
 class PlainPage(Page):

@@ -135,11 +135,11 @@ class _Callbacks:
             if current is not None:
                 builder.report(MISSING_COMMA, "a ',' is missing before this '{'", start)
                 fields.append(current)
-            current = Field(group, [], start, builder.lines)
+            current = Field(group, None, start, builder.lines)
             flat.append(current)
             group.fields = self.fields(inner, close, flat)
         if current is None:
-            current = Field(None, [], closer, builder.lines)
+            current = Field(None, None, closer, builder.lines)
             flat.append(current)
         fields.append(current)
         return fields

@@ -10,7 +10,6 @@ it reads, so that every diagnostic is known when ``parse`` returns.
 
 from __future__ import annotations
 
-import bisect
 import functools
 import re
 from collections.abc import Callable, Iterator
@@ -87,17 +86,19 @@ def check_strings(text: str, start: int, end: int, report: Report) -> None:
 
 
 def scan_run(text: str, start: int, end: int, source: LineIndex, fields: list[Field], current: Field | None,
-             flat: list[Field], report: Report | None = None) -> Field | None:
+             flat: list[Field], report: Report | None = None, leading: list[Comment] | None = None) -> Field | None:
     """Split the RUN ``text[start:end]`` into ``fields``; returns the field still open at its end.
 
     ``flat`` receives every field in document order; a comment goes to the last field
-    started (a RUN starts with a field, so one exists). This loop runs once per field of
-    a RUN with strings or comments: keep it lean.
+    started (a RUN starts with a field, so one exists), or to ``leading`` while none has
+    (:func:`entry_contents` scans the TRIVIA around the RUN too). This loop runs once per
+    field of a RUN with strings or comments: keep it lean.
     """
     for piece in lexicon().run_piece.finditer(text, start, end):
         comment, string, raw, comma = piece.groups()
         if comment is not None:
-            flat[-1].comments.append(Comment(comment[1:], piece.start(1), source))
+            (flat[-1].comments if flat or leading is None else leading).append(
+                Comment(comment[1:], piece.start(1), source))
             continue
         if string is not None or raw is not None:
             if current is not None:
@@ -105,17 +106,17 @@ def scan_run(text: str, start: int, end: int, source: LineIndex, fields: list[Fi
                 fields.append(current)
             if string is not None:
                 offset = piece.start(2)
-                current = Field(None, [], offset, source)
-                current.value = string_value(string, offset, current.comments, source)
+                between: list[Comment] = []  # comments between the parts of a concatenated string
+                current = Field(string_value(string, offset, between, source), between or None, offset, source)
                 if report is not None:
                     for problem in string_problems(string, offset):
                         report(*problem)
             else:
-                current = Field(scalar(raw), [], piece.start(3), source)
+                current = Field(scalar(raw), None, piece.start(3), source)
             flat.append(current)
         if comma is not None:
             if current is None:
-                current = Field(None, [], piece.start(4), source)
+                current = Field(None, None, piece.start(4), source)
                 flat.append(current)
             fields.append(current)
             current = None
@@ -151,71 +152,59 @@ def split_fields(pieces: list[str], start: int, closer: int, source: LineIndex) 
     field. An empty field stands at the comma that ends it; an empty last field at the
     ``closer`` (the ``;``).
     """
-    fields = []
+    fields: list[Field] = []
+    append = fields.append
     position = start
+    raw = ""
     for piece in pieces:
         raw = piece.strip(TRIVIA_CHARACTERS)  # the TRIVIA before and after the RUN may hold a Ctrl-Z
         if not raw:
-            fields.append(Field(None, [], position + len(piece), source))
-        else:
+            append(Field(None, None, position + len(piece), source))
+        elif raw[-1] == '"':
             offset = position + piece.index(raw[0])
-            if raw[-1] == '"':
-                field = Field(None, [], offset, source)
-                field.value = string_value(raw, offset, field.comments, source)
-                fields.append(field)
-            else:
-                fields.append(Field(scalar(raw), [], offset, source))
+            append(Field(string_value(raw, offset, [], source), None, offset, source))  # no "$": no comment
+        else:
+            append(Field(scalar(raw), None, position + piece.index(raw[0]), source))
         position += len(piece) + 1
     if not raw:
         fields[-1].offset = closer
     return fields
 
 
-def entry_contents(text: str, offset: int, source: LineIndex,
+def entry_contents(text: str, offset: int, end_offset: int, source: LineIndex,
                    trailing: Comment | None) -> tuple[list[Field], list[Comment]]:
-    """The fields and comments of the brace-less entry that starts at ``offset`` (the reader matched it).
+    """The fields and comments of the brace-less entry ``text[offset:end_offset]`` (the reader matched it).
 
     ``trailing`` is the comment after its ``;`` on the same line, which the reader saw;
     it belongs to the last field, like every comment after the last field's start.
     """
     body_start = text.index("=", offset) + 1  # ENTRY_START is KEYWORD, blanks and "="
-    closer = text.find(";", body_start)
+    closer = end_offset - 1
     pieces = simple_pieces(text[body_start:closer])
     if pieces is None:
-        return _scanned_contents(text, offset, body_start, source, trailing)
+        return _scanned_contents(text, body_start, closer, source, trailing)
     simple = split_fields(pieces, body_start, closer, source)  # no comment inside
     if trailing is not None:
         simple[-1].comments.append(trailing)
     return simple, []
 
 
-def _scanned_contents(text: str, offset: int, body_start: int, source: LineIndex,
+def _scanned_contents(text: str, body_start: int, closer: int, source: LineIndex,
                       trailing: Comment | None) -> tuple[list[Field], list[Comment]]:
-    """:func:`entry_contents` of an entry with comments, or strings that hold commas or backslashes."""
-    statement = lexicon().statement.match(text, offset)
-    assert statement is not None and statement.start("entry") == offset, "an entry the reader matched"
-    closer = statement.start("end")
-    run_start, run_end = statement.span("run")
+    """:func:`entry_contents` of an entry with comments, or strings that hold commas or backslashes.
+
+    The body is ``TRIVIA? RUN? TRIVIA?``; the TRIVIA holds only blanks and comments, which the
+    RUN's regex reads as it reads those between fields, so the whole body is scanned as one: a
+    comment goes to the last field that starts before it, or to the entry before the first.
+    """
     fields: list[Field] = []
-    if run_start < 0:
-        fields = flat = [Field(None, [], closer, source)]
-        around = [*comments_in(text, body_start, closer, source)]
-    else:
-        flat = []
-        current = scan_run(text, run_start, run_end, source, fields, None, flat)
-        if current is None:
-            current = Field(None, [], closer, source)
-            flat.append(current)
-        fields.append(current)
-        around = [*comments_in(text, body_start, run_start, source), *comments_in(text, run_end, closer, source)]
-    if trailing is not None:
-        around.append(trailing)
+    flat: list[Field] = []
     comments: list[Comment] = []
-    for comment in around:
-        index = bisect.bisect_right(flat, comment.offset, key=_offset_of) - 1
-        (flat[index].comments if index >= 0 else comments).append(comment)
+    current = scan_run(text, body_start, closer, source, fields, None, flat, leading=comments)
+    if current is None:
+        current = Field(None, None, closer, source)
+        flat.append(current)
+    fields.append(current)
+    if trailing is not None:
+        flat[-1].comments.append(trailing)
     return fields, comments
-
-
-def _offset_of(field: Field) -> int:
-    return field.offset

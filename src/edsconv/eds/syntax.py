@@ -165,17 +165,49 @@ class Group:
 Value = Scalar | String | Group
 
 
-@dataclass(slots=True)
 class Field(Located):
     """One comma-separated field; ``value`` is None for an empty (omitted) field.
 
-    An empty field is located at the comma, ``;`` or ``}`` that ends it.
+    An empty field is located at the comma, ``;`` or ``}`` that ends it. Its ``comments``
+    list is made when first asked for: most fields never have one, and an empty list per
+    field was a fifth of a dense file's model. Equality and ``repr`` are those of a dataclass
+    with the fields ``value`` and ``comments`` (position not compared).
     """
 
-    value: Value | None
-    comments: list[Comment] = field(default_factory=list)
-    offset: int = field(default=0, compare=False)
-    source: LineIndex | None = field(default=None, compare=False, repr=False)
+    __slots__ = ("value", "_comments", "offset", "source")
+    __hash__ = None  # type: ignore[assignment]  # mutable, compared by value
+
+    def __init__(self, value: Value | None, comments: list[Comment] | None = None, offset: int = 0,
+                 source: LineIndex | None = None) -> None:
+        self.value = value
+        self._comments = comments
+        self.offset = offset
+        self.source = source
+
+    @property
+    def comments(self) -> list[Comment]:
+        comments = self._comments
+        if comments is None:
+            comments = self._comments = []
+        return comments
+
+    @comments.setter
+    def comments(self, comments: list[Comment]) -> None:
+        self._comments = comments
+
+    @property
+    def has_comments(self) -> bool:
+        """True when a comment belongs to the field (without making its list)."""
+        return bool(self._comments)
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        assert isinstance(other, Field)
+        return self.value == other.value and (self._comments or []) == (other._comments or [])
+
+    def __repr__(self) -> str:
+        return f"Field(value={self.value!r}, comments={self._comments or []!r}, offset={self.offset!r})"
 
     @property
     def is_empty(self) -> bool:
@@ -229,7 +261,7 @@ class Entry(Located):
         from edsconv.eds.runs import entry_contents
 
         assert self.source is not None  # only unread entries come here
-        self._fields, self._comments = entry_contents(self.source.text, self.offset, self.source,
+        self._fields, self._comments = entry_contents(self.source.text, self.offset, self.end_offset, self.source,
                                                       self._trailing_comment)
         self._trailing_comment = None
 

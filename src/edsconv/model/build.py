@@ -9,14 +9,15 @@ diagnostics on the field; the structural checks live in :mod:`edsconv.checks`.
 from __future__ import annotations
 
 import functools
+import operator
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Severity, rule
-from edsconv.eds.syntax import EdsFile, Entry, Group, Scalar, String, Value, ValueKind
+from edsconv.eds.syntax import EdsFile, Entry, Field, Group, Scalar, String, Value, ValueKind
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -40,8 +41,8 @@ from edsconv.model import (
     Reference,
 )
 from edsconv.model.cip_build import attach
-from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES, set_parameter_field
-from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, to_path
+from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
+from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
 
 OBSOLETE_DATA_TYPE = rule(
     "EDS112", Severity.WARNING, "C.4.1.4.6", "A parameter names its data type by an obsolete Table C.16 identifier",
@@ -87,6 +88,19 @@ class _Plan:
     #: the value type tried last (None: the field holds only references or keywords)
     data_type: str | None
     names: str
+    #: a bare word may be a reference or a keyword (else only a proxy's Module words are read as words)
+    words: bool
+    #: kept as written (ParamDataType, Integer, PortSpecific: the data type is not known here)
+    kept: bool
+    #: values.convert of ``data_type``, chosen once (None: no converter, convert says so)
+    converter: Callable[[Value], Any] | None
+
+
+def _converter(data_type: str | None) -> Callable[[Value], Any] | None:
+    try:
+        return converter_of(data_type) if data_type is not None else None
+    except KeyError:
+        return None
 
 
 @functools.cache
@@ -94,8 +108,29 @@ def _plan(type_name: str) -> _Plan:
     kinds = type_name.split("|")
     data_types = [k for k in kinds if k not in _REFERENCE and k not in ("MemberKeyword", "Empty", "EPATH")]
     names = " or ".join(kind.removesuffix("Ref") + "N" if kind in _REFERENCE else kind for kind in kinds)
-    return _Plan(tuple(_REFERENCE[k] for k in kinds if k in _REFERENCE), "AssemRef" in kinds,
-                 "MemberKeyword" in kinds, "EPATH" in kinds, data_types[0] if data_types else None, names)
+    references = tuple(_REFERENCE[k] for k in kinds if k in _REFERENCE)
+    data_type = data_types[0] if data_types else None
+    kept = data_type in ("ParamDataType", "Integer", "PortSpecific")
+    return _Plan(references, "AssemRef" in kinds, "MemberKeyword" in kinds, "EPATH" in kinds, data_type, names,
+                 bool(references) or "AssemRef" in kinds or "MemberKeyword" in kinds, kept,
+                 None if kept else _converter(data_type))
+
+
+#: FieldSpec types whose fields are kept as written (:func:`plain`) by :meth:`_Builder.fields`
+_KEPT_AS_WRITTEN = frozenset({"Empty", "ParamDataType", "Integer", "PortSpecific"})
+
+
+@functools.lru_cache(maxsize=1024)
+def _field_types(spec: tables.EntrySpec, count: int) -> tuple[str | None, ...]:
+    """The type each of the first ``count`` fields of a ``spec`` entry is read as; None: kept as written.
+
+    Resolved once per entry family and length, not once per field (``field_at`` follows repeating tails).
+    """
+    types = []
+    for position in range(1, count + 1):
+        field_spec = spec.field_at(position)
+        types.append(None if field_spec is None or field_spec.eds_type in _KEPT_AS_WRITTEN else field_spec.eds_type)
+    return tuple(types)
 
 
 def plain(value: Value | None):
@@ -118,6 +153,13 @@ def as_written(value: Value | None):
 
 # Table C.17: these fields are read by the parameter's data type, once that is known
 _TYPED_BY_DATA_TYPE = ("minimum", "maximum", "default")
+#: (field index, attribute) of those fields
+_TYPED_PARAMETER_FIELDS = tuple((index, attribute) for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES)
+                                if attribute in _TYPED_BY_DATA_TYPE)
+#: (field index, on the Scaling record, attribute) of the other ParamN fields (split once)
+_PARAMETER_SETTERS = tuple((index, bool(attribute.partition(".")[1]), attribute.rpartition(".")[2])
+                           for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES)
+                           if attribute and attribute not in _TYPED_BY_DATA_TYPE)
 
 
 class _Builder:
@@ -138,13 +180,18 @@ class _Builder:
         empty or without a reading (then a diagnostic says why). A value that breaks a
         rule but has one reading is returned, and marked erroneous when the rule is an
         error (:attr:`Device.erroneous`)."""
-        if index >= len(entry.fields):
+        fields = entry.fields
+        if index >= len(fields):
             return None
-        field = entry.fields[index]
+        field = fields[index]
         if field.value is None:
             return None
+        return self.converted(entry, index, field, type_name, proxy)
+
+    def converted(self, entry: Entry, index: int, field: Field, type_name: str, proxy: bool) -> Any:
+        """:meth:`value` of a field that is not empty."""
         try:
-            return self.convert(field.value, type_name, proxy, entry, index)
+            return self.convert(field.value, type_name, proxy, entry, index)  # type: ignore[arg-type]
         except ValueProblem as problem:
             if not problem.reported:
                 self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field,
@@ -157,7 +204,7 @@ class _Builder:
 
     def convert(self, value: Value, type_name: str, proxy: bool, entry: Entry, index: int) -> Any:
         plan = _plan(type_name)
-        if isinstance(value, Scalar) and value.kind is ValueKind.WORD:
+        if (plan.words or proxy) and isinstance(value, Scalar) and value.kind is ValueKind.WORD:
             raw = value.raw
             if proxy and raw in (MODULE, MODULE_MEMBER_LIST):
                 return raw
@@ -172,19 +219,24 @@ class _Builder:
             return to_path(value, allow_references=True)
         if plan.data_type is None:
             raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {plain(value)!r}")
-        if plan.data_type in ("ParamDataType", "Integer", "PortSpecific"):
+        if plan.kept:
             return plain(value)
+        if plan.converter is not None:
+            return plan.converter(value)
         return convert(value, plan.data_type)
 
     def fields(self, entry: Entry, spec: tables.EntrySpec, *, proxy: bool = False) -> list[Any]:
         """Every field of a fixed-layout entry converted by its FieldSpec."""
-        values = []
-        for index in range(len(entry.fields)):
-            field_spec = spec.field_at(index + 1)
-            if field_spec is None or field_spec.eds_type in ("Empty", "ParamDataType", "Integer", "PortSpecific"):
-                values.append(plain(entry.fields[index].value))
+        values: list[Any] = []
+        fields = entry.fields
+        for index, type_name in enumerate(_field_types(spec, len(fields))):
+            field = fields[index]
+            if type_name is None:
+                values.append(plain(field.value))
+            elif field.value is None:
+                values.append(None)
             else:
-                values.append(self.value(entry, index, field_spec.eds_type, proxy=proxy))
+                values.append(self.converted(entry, index, field, type_name, proxy))
         return values
 
     # --- sections --------------------------------------------------------------------
@@ -224,9 +276,14 @@ class _Builder:
                 keyword = entry.keyword
                 notes.extend(CommentNote(section.name, keyword, None, c.text, True) for c in entry.leading_comments)
                 notes.extend(CommentNote(section.name, keyword, None, c.text) for c in entry.comments)
-                for index, item in enumerate(entry.fields):
-                    notes.extend(CommentNote(section.name, keyword, index, c.text) for c in item.comments)
-                    if isinstance(item.value, Group):  # comments inside a group go with the group's field
+                fields = entry.fields
+                # most entries have neither comments nor groups: tell them in C, without a loop in Python
+                if not any(map(_HAS_COMMENTS, fields)) and Group not in map(type, map(_VALUE_OF, fields)):
+                    continue
+                for index, item in enumerate(fields):
+                    if item.has_comments:
+                        notes.extend(CommentNote(section.name, keyword, index, c.text) for c in item.comments)
+                    if item.value.__class__ is Group:  # comments inside a group go with the group's field
                         notes.extend(CommentNote(section.name, keyword, index, c.text)
                                      for inner in Entry("", item.value.fields).walk_fields() for c in inner.comments)
 
@@ -268,13 +325,12 @@ class _Builder:
         v = self.fields(entry, spec, proxy=proxy)
         v += [None] * (len(tables.PARAM_FIELDS) - len(v))
         parameter = Parameter(entry.keyword, spec.keyword, tables.instance_number(entry.keyword), entry=entry)
-        for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES):
-            if attribute and attribute not in _TYPED_BY_DATA_TYPE:
-                set_parameter_field(parameter, attribute, v[index])
+        scaling = parameter.scaling
+        for index, on_scaling, name in _PARAMETER_SETTERS:
+            setattr(scaling if on_scaling else parameter, name, v[index])
         parameter.data_type = self.data_type(entry, parameter.data_type_code)
-        for index, attribute in enumerate(PARAMETER_FIELD_ATTRIBUTES):
-            if attribute in _TYPED_BY_DATA_TYPE:
-                setattr(parameter, attribute, self.param_value(entry, index, parameter, attribute, proxy))
+        for index, attribute in _TYPED_PARAMETER_FIELDS:
+            setattr(parameter, attribute, self.param_value(entry, index, parameter, attribute, proxy))
         return parameter
 
     def data_type(self, entry: Entry, code: Any) -> tables.DataType | None:
@@ -293,9 +349,10 @@ class _Builder:
 
     def param_value(self, entry: Entry, index: int, parameter: Parameter, attribute: str, proxy: bool) -> Any:
         """Minimum, maximum or default: typed by the parameter's data type (Table C.17)."""
-        if index >= len(entry.fields) or entry.fields[index].value is None:
+        fields = entry.fields
+        if index >= len(fields) or fields[index].value is None:
             return None
-        value = entry.fields[index].value
+        value = fields[index].value
         if proxy and isinstance(value, Scalar) and value.raw == MODULE:
             return MODULE
         type_name = parameter.value_type(attribute)
@@ -404,6 +461,10 @@ class _Builder:
             modular.query = Query(*v[:4])
         else:
             setattr(modular, SINGLE_ENTRY_ATTRIBUTES["Modular"][keyword], self.single(entry, spec))
+
+
+_HAS_COMMENTS = operator.attrgetter("has_comments")
+_VALUE_OF = operator.attrgetter("value")
 
 
 def iter_references(device: Device) -> Iterator[Reference]:

@@ -21,6 +21,7 @@ sequence Table C.4 does not define (C.4.1.3.3.5: "reject the entire string").
 from __future__ import annotations
 
 import datetime
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -224,7 +225,7 @@ class Parameter:
 
     def descriptor_flags(self) -> list[str]:
         """The names of the Table C.15 bits set in the descriptor."""
-        return tables.flags_set(self.descriptor or 0, tables.PARAM_DESCRIPTOR_BITS)
+        return list(_flags(self.descriptor or 0, tables.PARAM_DESCRIPTOR_BITS.table))
 
     def engineering_value(self, value: float) -> float:
         """The value shown to the user, by the scaling formula of Figure C.5.
@@ -266,11 +267,6 @@ def parameter_field_type(attribute: str) -> str:
     if attribute == "data_type_code":
         return "code"
     return tables.PARAM_FIELDS[PARAMETER_FIELD_ATTRIBUTES.index(attribute)].alternatives[0]
-
-
-def set_parameter_field(parameter: Parameter, attribute: str, value: Any) -> None:
-    record, _, name = attribute.rpartition(".")
-    setattr(parameter.scaling if record else parameter, name, value)
 
 
 @dataclass(slots=True)
@@ -363,12 +359,25 @@ class Connection:
     def trigger_transport_bits(self) -> list[tuple[tables.BitField, int, str]]:
         if not isinstance(self.trigger_transport, int):
             return []
-        return tables.decode_bits(self.trigger_transport, tables.TRIGGER_TRANSPORT_BITS)
+        return list(_bits(self.trigger_transport, tables.TRIGGER_TRANSPORT_BITS.table))
 
     def parameter_bits(self) -> list[tuple[tables.BitField, int, str]]:
         if not isinstance(self.parameters, int):
             return []
-        return tables.decode_bits(self.parameters, tables.CONNECTION_PARAMETER_BITS)
+        return list(_bits(self.parameters, tables.CONNECTION_PARAMETER_BITS.table))
+
+
+# The few descriptor, trigger and parameter words of a file recur on every entry: each is decoded once.
+@functools.lru_cache(maxsize=1024)
+def _bits(value: int, table: str) -> tuple[tuple[tables.BitField, int, str], ...]:
+    """tables.decode_bits of ``value`` by the bit table named ``table`` (a key of tables.BIT_TABLES)."""
+    return tuple(tables.decode_bits(value, tables.BIT_TABLES[table]))
+
+
+@functools.lru_cache(maxsize=1024)
+def _flags(value: int, table: str) -> tuple[str, ...]:
+    """tables.flags_set of ``value`` by the bit table named ``table``."""
+    return tuple(tables.flags_set(value, tables.BIT_TABLES[table]))
 
 
 @dataclass(slots=True)

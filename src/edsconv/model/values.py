@@ -18,10 +18,12 @@ rule is an error (see :mod:`edsconv.model.device`).
 from __future__ import annotations
 
 import datetime
+import functools
 import re
 import struct
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import Any
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Rule, Severity, block, rule
@@ -277,9 +279,17 @@ def to_integer(value: Value | None, type_name: str) -> int:
     type allows (signed types read it as two's complement); ``0b`` binary, with
     any number of leading zeros, for bit strings only (C.4.1.3.7 - C.4.1.3.9).
     """
+    if not isinstance(value, Scalar):
+        raise ValueProblem(WRONG_KIND, f"expected an integer ({type_name}), found {_describe(value)}")
+    return _integer(value.raw, type_name)
+
+
+@functools.lru_cache(maxsize=4096)
+def _integer(raw: str, type_name: str) -> int:
+    """:func:`to_integer` of a scalar's spelling; cached (the few spellings of a file recur in every
+    entry), a spelling that raises is read again each time (``lru_cache`` keeps no exception)."""
     data_type = tables.DATA_TYPES_BY_NAME[type_name]
     clause = _notation_clause(data_type)
-    raw = _scalar(value, f"an integer ({type_name})")
     kind = Scalar(raw).kind
     if kind is ValueKind.HEX:
         digits = raw[2:]
@@ -449,6 +459,13 @@ def to_text(value: Value | None) -> str:
     """
     if not isinstance(value, String):
         raise ValueProblem(WRONG_KIND, f"expected a quoted string, found {_describe(value)}")
+    return _text(value.parts)
+
+
+@functools.lru_cache(maxsize=4096)
+def _text(parts: tuple[str, ...]) -> str:
+    """:func:`to_text` of a string's parts; cached like :func:`_integer`."""
+    value = String(parts)
     misplaced = None
     for part in value.parts:
         for _, sequence, defined in undefined_escapes(part, value.unicode):
@@ -585,8 +602,16 @@ def to_path(value: Value, allow_references: bool = False) -> tuple[PathItem, ...
     return path_items(to_text(value), allow_references)
 
 
+#: the item of each two-digit hexadecimal byte, by its spelling (items are immutable: one of each)
+_BYTE_ITEMS = {f"{high}{low}": PathItem(byte=int(f"{high}{low}", 16))
+               for high in "0123456789ABCDEFabcdef" for low in "0123456789ABCDEFabcdef"}
+
+
 def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]:
     """The items of a path's text, as an EDS string or an XML profile holds it."""
+    tokens = text.split()  # the white space _PATH_TOKEN's \s skips
+    if all(map(_BYTE_ITEMS.__contains__, tokens)):  # bytes only, as most paths: no regex per byte
+        return tuple(map(_BYTE_ITEMS.__getitem__, tokens))
     items: list[PathItem] = []
     position = 0
     stripped_end = len(text.rstrip())
@@ -633,18 +658,24 @@ CONVERTERS = {
 
 def convert(value: Value, type_name: str):
     """Convert a field value to the Python value of ``type_name``."""
+    return converter_of(type_name)(value)
+
+
+@functools.cache
+def converter_of(type_name: str) -> Callable[[Value], Any]:
+    """The function :func:`convert` calls for ``type_name``, chosen once per type."""
     converter = CONVERTERS.get(type_name)
     if converter is not None:
-        return converter(value)
+        return converter
     data_type = tables.DATA_TYPES_BY_NAME.get(type_name)
     if data_type is None:
         raise KeyError(f"no converter for type {type_name}")
     if data_type.kind == "real":
-        return to_real(value, type_name)
+        return functools.partial(to_real, type_name=type_name)
     if data_type.kind in ("string",):
-        return to_text(value)
+        return to_text
     if data_type.kind == "epath":
-        return to_path(value)
+        return to_path
     if data_type.kind == "stringi":
-        return to_stringi(value)
-    return to_integer(value, type_name)
+        return to_stringi
+    return functools.partial(to_integer, type_name=type_name)

@@ -61,3 +61,35 @@ def test_icon_contents_that_is_not_base64_says_why(text: str, problem: str) -> N
 
     icon = decode_icon(text)
     assert (icon.kind, icon.problem) == ("not base64", problem)
+
+
+def test_a_comment_on_a_field_far_beyond_the_entry_stays_with_the_entry() -> None:
+    # found by fuzzing xml2eds: field="666...6" padded the entry with that many empty fields (24 GB)
+    from edsconv.eds.from_model import MAX_DROPPED_FIELDS, attach_comments
+    from edsconv.model import CommentNote
+
+    eds = edsconv.parse("[Device]\n        VendCode = 1;\n")
+    attach_comments(eds, [CommentNote("Device", "VendCode", 10**36, "far", False),
+                          CommentNote("Device", "VendCode", MAX_DROPPED_FIELDS - 1, "near", False)])
+    entry = eds.sections[0].entries[0]
+    assert [c.text for c in entry.comments] == ["far"]
+    assert len(entry.fields) == MAX_DROPPED_FIELDS and [c.text for c in entry.fields[-1].comments] == ["near"]
+
+
+
+def test_a_port_path_xml_cannot_hold_is_kept_in_an_extension_and_read_back(tmp_path) -> None:
+    # found by fuzzing eds2xml: NUL characters in Port1's path made lxml refuse the PortObject text
+    from pathlib import Path
+
+    from edsconv.xml.common import Header
+    from edsconv.xml.convert import device_from_profiles, profile_documents
+
+    text = (Path(__file__).parent.parent / "corpus" / "examples" / "io_adapter.eds").read_text()
+    device, _ = edsconv.analyse(edsconv.parse(text.replace('"20 F5 24 01"', '"20 F\x00 24 01"')))
+    assert device.ports[0].object_path == "20 F\x00 24 01"  # kept as written: not a path
+    paths = []
+    for document in profile_documents(device, Header.derive(device, "x"), "x"):
+        paths.append(tmp_path / document.name)
+        paths[-1].write_bytes(document.data)
+    back, problems = device_from_profiles(paths)
+    assert problems == [] and back is not None and back.ports[0].object_path == device.ports[0].object_path

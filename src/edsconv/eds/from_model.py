@@ -362,6 +362,12 @@ def device_to_eds(device: Device) -> EdsFile:
     return eds
 
 
+#: A comment on a field beyond the entry's last is on a trailing empty field the writer dropped: at most
+#: this many (no entry of the tables has as many fields), so a profile cannot make an entry of millions
+#: of empty fields with one comment (found by fuzzing xml2eds).
+MAX_DROPPED_FIELDS = 256
+
+
 def attach_comments(eds: EdsFile, notes: Iterable[CommentNote]) -> None:
     """Put each CommentNote back on its section / entry / field. A note on a trailing
     empty field the entry dropped brings that field back (empty), so the comment stays
@@ -384,7 +390,7 @@ def attach_comments(eds: EdsFile, notes: Iterable[CommentNote]) -> None:
             section.leading_comments.append(comment)
         elif note.leading:
             entry.leading_comments.append(comment)
-        elif note.field is None:
+        elif note.field is None or note.field - len(entry.fields) >= MAX_DROPPED_FIELDS:  # too far: the entry's
             entry.comments.append(comment)
         else:
             entry.fields.extend(Field(None) for _ in range(note.field + 1 - len(entry.fields)))

@@ -150,9 +150,11 @@ def read_entries(parent) -> list[GenericEntry]:
 
 
 def read_comment(element) -> CommentNote:
-    field = element.get("field")
-    return CommentNote(element.get("section", ""), element.get("keyword"), None if field is None else int(field),
-                       get_text(element), element.get("leading") == "true")
+    field = None if element.get("field") is None else int(element.get("field"))
+    if field is not None and field < 0:
+        raise ValueError(f"a comment on field {field}")
+    return CommentNote(element.get("section", ""), element.get("keyword"), field, get_text(element),
+                       element.get("leading") == "true")
 
 
 # --- typed values (edsconv:Value) ------------------------------------------------------------

@@ -126,6 +126,10 @@ def _text_extension(tag: str, text: str, **attributes: str) -> etree._Element:
     return _ext(tag, _escape(text), escaped="true", **attributes)
 
 
+#: The port elements whose exact text an edsconv:Value holds when XML cannot: the Port attribute it sets.
+_PORT_TEXT_FIELDS = {"PortTypeName": "type_name", "PortName": "name", "PortObject": "object_path"}
+
+
 def _path_text(path: Iterable[PathItem]) -> str:
     return " ".join(str(item) for item in path)
 
@@ -264,8 +268,11 @@ def _port_element(port: Port, tag: str, **attributes: str) -> etree._Element:
         etree.SubElement(element, namespace + "PortName").text = xml_text(port.name)
         if not is_xml_text(port.name):
             extensions.append(_text_extension("Value", port.name, field="PortName"))
-    if port.object_path is not None:
+    if isinstance(port.object_path, tuple):
         etree.SubElement(element, namespace + "PortObject").text = _path_text(port.object_path)
+    elif port.object_path is not None:  # kept as written, not decodable: as a connection's path is
+        etree.SubElement(element, namespace + "PortObject").text = ""
+        extensions.append(_text_extension("Value", port.object_path, field="PortObject"))
     if port.port_number is not None:
         etree.SubElement(element, namespace + "PortNumber").text = str(port.port_number)
     specific = etree.SubElement(element, namespace + "PortSpecific")
@@ -444,9 +451,8 @@ class _Reader:
                     port.port_number = int(text)
                 elif tag == "PortSpecific":
                     port.specific = tuple(self.specific(child))
-                elif tag == EDSCONV + "Value" and child.get("field") in ("PortTypeName", "PortName"):
-                    attribute = "type_name" if child.get("field") == "PortTypeName" else "name"
-                    setattr(port, attribute, self.extension_value(None, child))
+                elif tag == EDSCONV + "Value" and child.get("field") in _PORT_TEXT_FIELDS:
+                    setattr(port, _PORT_TEXT_FIELDS[child.get("field", "")], self.extension_value(None, child))
             except ValueProblem as problem:
                 self.report(problem, child)
         return port

@@ -193,3 +193,17 @@ def test_a_repeated_field_of_empty_text_is_reported():
     back = Device()
     assert [p.code for p in read_device_profile(root, back)] == ["XML202"]
     edsconv.analyse(device_to_eds(back))
+
+
+@pytest.mark.parametrize("part", ["no quotes", '"open', '"a"b"'])
+def test_a_string_field_that_is_no_quoted_eds_string_is_reported(part: str):
+    # found by fuzzing xml2eds: a string part without its quotes reached the typed model, which failed on it
+    from edsconv.xml.codec import read_field
+
+    field = etree.Element(EDSCONV + "Field", kind="string")
+    etree.SubElement(field, EDSCONV + "Part").text = part
+    with pytest.raises(ValueError, match="is not a quoted EDS string"):
+        read_field(field)
+    etree.SubElement(field, EDSCONV + "Part").text = '"fine"'
+    field[0].text = 'L"also fine"'
+    assert read_field(field).parts == ('L"also fine"', '"fine"')

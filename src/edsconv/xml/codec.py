@@ -26,6 +26,7 @@ import math
 from lxml import etree
 
 from edsconv import spec_tables as tables
+from edsconv.eds.lexicon import lexicon
 from edsconv.eds.syntax import Scalar, String
 from edsconv.model import (
     Assembly,
@@ -126,10 +127,20 @@ def read_field(element):
         return [read_field(child) for child in element if child.tag == EDSCONV + "Field"]
     if kind == "string":
         parts = tuple(get_text(part) for part in element if part.tag == EDSCONV + "Part")
-        return String(parts or (get_text(element),))
+        return eds_string(parts or (get_text(element),))
     if kind == "scalar":
         return eds_scalar(get_text(element))
     raise ValueError(f"unknown field kind {kind!r}")
+
+
+def eds_string(parts: tuple[str, ...]) -> String:
+    """``parts`` as an EDS string's parts, each spelled ``"..."`` or ``L"..."``; ValueError otherwise (a part
+    XML text made without its quotes would not read back as the string it was)."""
+    for part in parts:
+        match = lexicon().string_piece.fullmatch(part)
+        if match is None or match.group(1) is None:
+            raise ValueError(f"{part[:40]!r} is not a quoted EDS string")
+    return String(parts)
 
 
 def eds_scalar(text: str) -> Scalar:

@@ -34,12 +34,12 @@ from lxml import etree
 
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
-from edsconv.eds.syntax import Scalar, String
+from edsconv.eds.syntax import Scalar
 from edsconv.model import GenericEntry, GenericSection
 from edsconv.model.cip import Service
 from edsconv.model.cip_build import reading, section_table
 from edsconv.model.values import PathItem
-from edsconv.xml.codec import eds_scalar, float_text, read_entry, read_field, write_entries, write_field
+from edsconv.xml.codec import eds_scalar, eds_string, float_text, read_entry, read_field, write_entries, write_field
 from edsconv.xml.common import EDSCONV, is_xml_text
 from edsconv.xml.datamodel import collapse, string_value
 
@@ -237,7 +237,7 @@ def eds_spelling(text: str, field_spec: tables.FieldSpec):
     if any(pattern.fullmatch(word) for pattern in references):
         return Scalar(word)
     if string and word not in field_spec.choices:
-        return String((f'"{text}"',))
+        return eds_string((f'"{text}"',))
     return eds_scalar(word)
 
 

@@ -117,15 +117,13 @@ class Session:
         return f"{self.host}:{self.port}"
 
     def _open(self) -> Any:
+        """Connect and register a session (cpppo's connector); each failure as the line that says why."""
         try:
             return self._client.connector(host=self.host, port=self.port, timeout=self.timeout)
         except OSError as error:
             raise DeviceError(self._socket_failure(error)) from error
-        except AssertionError as error:
+        except Exception as error:  # cpppo asserts on a missing reply, its parser on one that is not EtherNet/IP
             raise DeviceError(self._no_answer(str(error))) from error
-        except Exception as error:  # cpppo's parser refused what came back
-            raise DeviceError(f"{self.where}: does not answer as an EtherNet/IP device (its reply to "
-                              f"Register Session is not EtherNet/IP: {error})") from error
 
     def _socket_failure(self, error: OSError) -> str:
         if isinstance(error, socket.timeout | TimeoutError):
@@ -141,7 +139,7 @@ class Session:
     def _no_answer(self, reason: str) -> str:
         if "Failed to receive any response" in reason:
             return f"{self.where}: no answer within {self.timeout:g} s (timed out waiting for the device)"
-        return f"{self.where}: does not answer as an EtherNet/IP device ({reason})"
+        return f"{self.where}: does not answer as an EtherNet/IP device (no EtherNet/IP reply to Register Session)"
 
     def _exchange(self) -> Any:
         """The next reply, within the timeout; a silent or vanished device is a DeviceError."""
@@ -150,7 +148,8 @@ class Session:
         except OSError as error:
             raise DeviceError(self._socket_failure(error)) from error
         except Exception as error:
-            raise DeviceError(f"{self.where}: does not answer as an EtherNet/IP device ({error})") from error
+            raise DeviceError(f"{self.where}: does not answer as an EtherNet/IP device (a reply that is not "
+                              "EtherNet/IP)") from error
         if response is None:
             raise DeviceError(self._no_answer("Failed to receive any response"))
         if not response or response.get("enip.status", 0) != 0:

@@ -5,10 +5,6 @@ revision, one assembly size and one object. No traffic leaves the loopback addre
 from __future__ import annotations
 
 import json
-import socket
-import subprocess
-import sys
-import threading
 from collections.abc import Iterator
 
 import pytest
@@ -56,7 +52,7 @@ def test_the_differing_device_gives_exactly_its_three_differences(other: str):
                              ("EDS602", line_of("[Ethernet Link Class]"))]
     messages = [d["message"] for d in json.loads(result.stdout)["files"][0]["diagnostics"]]
     assert messages[0] == "MinRev is 3 but the device answers 4 (List Identity) and 4 (Identity object)"
-    assert messages[1] == "Assem100 gives assembly instance 100 8 bytes but the device's holds 10"
+    assert messages[1] == "Assem100 is 8 bytes but the device's assembly instance 100 holds 10"
     assert messages[2].startswith("the device has no Ethernet Link object (class 0xF6): general status 0x05")
 
 

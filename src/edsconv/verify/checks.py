@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from edsconv import cip_tables
 from edsconv.checks import Context
-from edsconv.diagnostics import Diagnostic
+from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.model import Device
 from edsconv.model.cip import ObjectClass
 from edsconv.verify import rules
@@ -32,14 +32,14 @@ class Probe:
     device: Device
     context: Context
 
-    def at(self, rule_: rules.Rule, message: str, section: str, keyword: str | None = None,
+    def at(self, rule_: Rule, message: str, section: str, keyword: str | None = None,
            field: int | None = None) -> Diagnostic:
         """A diagnostic at ``[section] keyword`` (field ``field``), at the section header, or at the file's start."""
         found = self.context.eds.section(section)
-        node = found.entry(keyword) if found is not None and keyword is not None else found
-        if node is not None and field is not None and field < len(node.fields):
-            node = node.fields[field]
-        return self.context.at(rule_, message, node)
+        entry = found.entry(keyword) if found is not None and keyword is not None else None
+        if entry is not None and field is not None and field < len(entry.fields):
+            return self.context.at(rule_, message, entry.fields[field])
+        return self.context.at(rule_, message, entry if entry is not None else found)
 
     def read(self, class_id: int, instance: int, attribute: int) -> Reply:
         return self.session.get_attribute(class_id, instance, attribute)
@@ -143,8 +143,9 @@ def _listed_attributes(probe: Probe, record: ObjectClass) -> Iterator[Diagnostic
         for position, attribute in enumerate(listed or ()):
             reply = probe.read(class_id, instance, attribute)
             if reply.status == ATTRIBUTE_NOT_SUPPORTED or reply.absent:
+                holder = "the class" if instance == 0 else "instance 1"
                 yield probe.at(rules.ATTRIBUTE_NOT_SUPPORTED, f"the device does not support attribute {attribute} "
-                               f"of {'the class' if instance == 0 else 'instance 1'}: {reply.words()}",
+                               f"of {holder}: {reply.words()}",
                                record.section, keyword, position)
             elif not reply.ok:
                 yield probe.at(rules.NOT_CHECKED, f"attribute {attribute} could not be read: {reply.words()}",
@@ -158,5 +159,6 @@ def undeclared_objects(probe: Probe) -> Iterator[Diagnostic]:
         if spec.class_id is None or spec.class_id in declared | EVERY_DEVICE_HAS:
             continue
         if probe.read(spec.class_id, 0, 1).ok:
-            yield probe.at(rules.OBJECT_UNDECLARED, f"the device has a {spec.name.removesuffix(' Class')} object (class "
-                           f"0x{spec.class_id:02X}) but the EDS has no [{spec.name}] section", "")
+            name = spec.name.removesuffix(" Class")
+            yield probe.at(rules.OBJECT_UNDECLARED, f"the device has a {name} object (class 0x{spec.class_id:02X}) "
+                           f"but the EDS has no [{spec.name}] section", "")

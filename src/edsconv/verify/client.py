@@ -49,7 +49,7 @@ class Reply:
 
     def words(self) -> str:
         """``general status 0x01 (Connection failure), extended status 0x0109 (Invalid connection size)``."""
-        from pycomm3.cip.status_info import EXTEND_CODES, SERVICE_STATUS
+        from pycomm3.cip.status_info import EXTEND_CODES, SERVICE_STATUS  # the words of CIP Vol 1 App. B
 
         text = f"general status 0x{self.status:02X} ({SERVICE_STATUS.get(self.status, 'unknown status')})"
         for word in self.extended:
@@ -97,7 +97,7 @@ class Session:
 
     def __enter__(self) -> Session:
         try:
-            from cpppo.server.enip import client
+            from cpppo.server.enip import client  # type: ignore[import-untyped]
         except ImportError as error:
             raise DeviceError(f"edsconv verify needs the device extra ({error.name} is missing): {EXTRA}") from error
         for name in ("enip", "cpppo"):  # cpppo logs failures it raises; we report them, once
@@ -174,10 +174,11 @@ class Session:
         """Forward Open with ``request``'s parameters; when it succeeds, Forward Close at once."""
         opened = self._connection_manager(
             self._connection.forward_open, path=CONNECTION_MANAGER, connection_path=request.connection_path,
-            priority_time_tick=7, timeout_ticks=155, O_T={"RPI": request.o_to_t_rpi, "NCP": request.o_to_t_ncp, "connection_ID": request.serial},
-            T_O={"RPI": request.t_to_o_rpi, "NCP": request.t_to_o_ncp, "connection_ID": 0xFFFFFFFF}, O_serial=ORIGINATOR_SERIAL,
-            O_vendor=ORIGINATOR_VENDOR, connection_serial=request.serial, transport_class_triggers=request.transport,
-            connection_timeout_multiplier=0)
+            priority_time_tick=7, timeout_ticks=155,
+            O_T={"RPI": request.o_to_t_rpi, "NCP": request.o_to_t_ncp, "connection_ID": request.serial},
+            T_O={"RPI": request.t_to_o_rpi, "NCP": request.t_to_o_ncp, "connection_ID": 0xFFFFFFFF},
+            O_serial=ORIGINATOR_SERIAL, O_vendor=ORIGINATOR_VENDOR, connection_serial=request.serial,
+            transport_class_triggers=request.transport, connection_timeout_multiplier=0)
         if opened.ok:
             self.forward_close(request)
         return opened

@@ -77,7 +77,8 @@ def _size(device: Device, endpoint: ConnectionEndpoint) -> int | None:
 
 def _ncp(parameters: int, direction: str, size: int) -> int:
     """The 16-bit Network Connection Parameters of a (small) Forward Open for one direction."""
-    variable = not _field(parameters, f"{direction} fixed size") and bool(_field(parameters, f"{direction} variable size"))
+    fixed, variable = (_field(parameters, f"{direction} {size_kind} size") for size_kind in ("fixed", "variable"))
+    variable = not fixed and bool(variable)
     kind = next((code for name, code in TYPES if _field(parameters, f"{direction} {name}")), 0) if size else 0
     priority = next((code for name, code in PRIORITIES if _field(parameters, f"{direction} {name}")), 0)
     return kind << TYPE_SHIFT | priority << PRIORITY_SHIFT | int(variable) << VARIABLE_BIT | size

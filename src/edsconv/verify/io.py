@@ -45,7 +45,7 @@ def segments(path: object) -> list[tuple[str, int]] | None:
     found = [(s["type"], s.get("value")) for s in decoded["segments"]]
     if not found or any(kind not in SEGMENT_NAMES or not isinstance(value, int) for kind, value in found):
         return None
-    return found  # type: ignore[return-value]
+    return found
 
 
 def assembly_instance(assembly: Assembly) -> int | None:
@@ -98,8 +98,8 @@ def assembly_sizes(probe: Probe) -> Iterator[Diagnostic]:
             yield probe.at(rules.NOT_CHECKED, f"the size of assembly instance {instance} could not be read: "
                            f"{size.words()}", expected.section, expected.keyword, expected.field)
         elif found != expected.size:
-            yield probe.at(rules.ASSEMBLY_SIZE_MISMATCH, f"{expected.keyword} gives assembly instance {instance} "
-                           f"{expected.size} bytes but the device's holds {found}", expected.section,
+            yield probe.at(rules.ASSEMBLY_SIZE_MISMATCH, f"{expected.keyword} is {expected.size} bytes but the "
+                           f"device's assembly instance {instance} holds {found}", expected.section,
                            expected.keyword, expected.field)
 
 

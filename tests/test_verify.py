@@ -14,6 +14,11 @@ pytest.importorskip("cpppo", reason="edsconv[device] is not installed")
 pytest.importorskip("pycomm3", reason="edsconv[device] is not installed")
 
 from edsconv.cli import cli  # noqa: E402
+from edsconv.eds.reader import load  # noqa: E402
+from edsconv.model.build import build  # noqa: E402
+from edsconv.verify.client import Session  # noqa: E402
+from edsconv.verify.forward import forward_open  # noqa: E402
+from edsconv.verify.io import segments  # noqa: E402
 from verify_devices import EDS, MATCHING, differing, line_of, running  # noqa: E402
 
 
@@ -59,9 +64,20 @@ def test_the_differing_device_gives_exactly_its_three_differences(other: str):
 def test_connect_opens_and_closes_each_connection_of_the_matching_device(matching: str):
     result = verify("--device", matching, "--connect", "--format", "json")
     assert (result.exit_code, found(result)) == (0, [])
-    # the connection was closed: the same Forward Open (same serials) is accepted again
-    assert (verify("--device", matching, "--connect").exit_code) == 0
     assert "closed again at once" in verify("--device", matching, "--connect").stderr
+
+
+def test_each_connection_opened_is_closed_at_once(matching: str):
+    host, port = matching.split(":")
+    device = build(load(EDS))
+    (connection,) = device.connections.values()
+    request, _ = forward_open(device, connection, 1, segments(connection.path))
+    assert request is not None and request.transport == 0x01  # class 1, cyclic (0x04010002)
+    assert (request.o_to_t_ncp & 0x1FF, request.t_to_o_ncp & 0x1FF) == (4 + 2 + 4, 8 + 2)
+    with Session(host, int(port), 2.0) as session:
+        opened = session.forward_open(request)
+    assert opened.ok and opened.closed is not None and opened.closed.ok
+    assert opened.closed.established.forward_close.connection_serial == 1
 
 
 def test_connect_reports_the_refusal_in_words(other: str):

@@ -91,7 +91,7 @@ def test_a_device_that_is_not_ethernet_ip():
 def test_a_device_address_without_a_port_number():
     result = verify("127.0.0.1:http")
     assert result.exit_code == 2
-    assert "127.0.0.1:http: the port is not a number from 1 to 65535" in result.stderr
+    assert "127.0.0.1:http: not HOST or HOST:PORT with a port from 1 to 65535" in result.stderr
 
 
 def test_without_the_extra_verify_says_how_to_install_it(monkeypatch: pytest.MonkeyPatch):
@@ -110,3 +110,19 @@ def test_lint_and_the_rules_do_not_import_the_extra():
                "print(sorted(m for m in sys.modules if m.split('.')[0] in ('cpppo', 'pycomm3')))")
     result = subprocess.run([sys.executable, "-c", program, str(EDS)], capture_output=True, text=True, timeout=60)
     assert result.stdout.splitlines()[-1] == "[]"
+
+
+@pytest.mark.parametrize(("device", "host", "port"), [
+    ("192.168.1.20", "192.168.1.20", 44818), ("plc.local:2222", "plc.local", 2222),
+    ("[::1]:44818", "::1", 44818), ("::1", "::1", 44818), ("[fe80::1]", "fe80::1", 44818)])
+def test_the_device_address(device: str, host: str, port: int):
+    from edsconv.verify import Target
+
+    assert Target.parse(device, 1.0) == Target(host, port, 1.0)
+
+
+def test_help_names_its_documentation():
+    result = CliRunner().invoke(cli, ["verify", "--help"])
+    assert result.exit_code == 0
+    assert "pip install 'edsconv[device]'" in result.stdout
+    assert result.stdout.split("Documentation:")[1].split()[0].endswith("verify.md")

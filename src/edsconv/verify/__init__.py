@@ -34,13 +34,16 @@ class Target:
     @classmethod
     def parse(cls, device: str, timeout: float) -> Target:
         """``HOST`` or ``HOST:PORT`` (an IPv6 address in brackets: ``[::1]:44818``)."""
-        host, _, port = device.rpartition(":") if device.count(":") == 1 or device.startswith("[") \
-            else (device, "", "")
-        if not port:
-            return cls(device.strip("[]"), DEFAULT_PORT, timeout)
-        if not port.isdigit() or not 0 < int(port) < 65536:
-            raise ValueError(f"{device}: the port is not a number from 1 to 65535")
-        return cls(host.strip("[]"), int(port), timeout)
+        if device.startswith("["):
+            host, _, rest = device[1:].partition("]")
+            port = rest.removeprefix(":") if rest else str(DEFAULT_PORT)
+        elif device.count(":") == 1:
+            host, _, port = device.partition(":")
+        else:  # a name, an IPv4 address or a bare IPv6 address
+            host, port = device, str(DEFAULT_PORT)
+        if not host or not port.isdigit() or not 0 < int(port) < 65536:
+            raise ValueError(f"{device}: not HOST or HOST:PORT with a port from 1 to 65535")
+        return cls(host, int(port), timeout)
 
 
 def verify(path: Path, target: Target, connect: bool = False, strict: bool = False) -> FileReport:

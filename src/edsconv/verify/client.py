@@ -37,6 +37,8 @@ class Reply:
     data: bytes = b""
     #: what a successful Forward Open answered (serials and connection IDs), for its Forward Close
     established: Any = field(default=None, compare=False, repr=False)
+    #: a Forward Open's: the reply to the Forward Close that followed it
+    closed: Reply | None = field(default=None, compare=False, repr=False)
 
     @property
     def ok(self) -> bool:
@@ -179,9 +181,13 @@ class Session:
             T_O={"RPI": request.t_to_o_rpi, "NCP": request.t_to_o_ncp, "connection_ID": 0xFFFFFFFF},
             O_serial=ORIGINATOR_SERIAL, O_vendor=ORIGINATOR_VENDOR, connection_serial=request.serial,
             transport_class_triggers=request.transport, connection_timeout_multiplier=0)
-        if opened.ok:
-            self.forward_close(request)
-        return opened
+        if not opened.ok:
+            return opened
+        closed = self.forward_close(request)
+        if not closed.ok:  # never seen; without data sent the device drops it after 4 RPIs (multiplier 0)
+            raise DeviceError(f"{self.where}: the device refused to close a connection verify opened "
+                              f"(Forward Close: {closed.words()})")
+        return Reply(opened.status, opened.extended, established=opened.established, closed=closed)
 
     def forward_close(self, request: ForwardOpen) -> Reply:
         return self._connection_manager(

@@ -25,7 +25,7 @@ PARAMS = """
 """
 #: every code verify reports: none of them on the device the EDS describes
 VERIFY_CODES = ("EDS601", "EDS602", "EDS603", "EDS604", "EDS605", "EDS606", "EDS607", "EDS608", "EDS609", "EDS610",
-                "EDS611", "EDS612")
+                "EDS611", "EDS612", "EDS613")
 CONNECTION = """
         Connection2 = 0x02010002, 0x44240305, 0, 0, , , 8, Assem100, ,, ,, "Input Only", "",
                 "20 04 24 01 2C C6 2C 65";
@@ -45,8 +45,10 @@ def faulty_eds(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 @pytest.fixture(scope="module")
 def device(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
-    """MATCHING with the TCP/IP Interface at revision 3, Param1 at 2400 rpm and a QoS object (0x48)."""
+    """MATCHING with the TCP/IP Interface at revision 3, Param1 at 2400 rpm, a QoS object (0x48) and the
+    Ethernet Link interface labelled X2."""
     config = copy.deepcopy(MATCHING)
+    config["objects"]["246"]["instances"]["1"]["10"] = ["SSTRING", "X2"]
     config["classes"]["245"] = 3
     config["objects"]["100"]["instances"]["1"]["1"] = ["UINT", 2400]
     config["objects"]["72"] = {"revision": 1, "instances": {"1": {"1": ["USINT", 0]}}}
@@ -67,7 +69,7 @@ def test_each_entry_the_device_answers_otherwise(faulty_eds: Path, device: str):
     assert [(c, line) for c, line, _ in found] == [
         ("EDS608", at("0, 1800, 1500")), ("EDS609", at("Param2 =")), ("EDS610", at("Param3 =")),
         ("EDS612", at("Param4 =")), ("EDS607", at("Connection2 =")), ("EDS603", at("[TCP/IP Interface Class]") + 1),
-        ("EDS604", at("Instance_Attributes")),
+        ("EDS604", at("Instance_Attributes")), ("EDS613", at("InterfaceLabel1")),
     ]
     messages = dict(((c, m) for c, _, m in found))
     assert messages["EDS608"] == ("Param1: the device holds 2400, above the maximum 1800 (class 0x64 instance 1 "
@@ -76,6 +78,7 @@ def test_each_entry_the_device_answers_otherwise(faulty_eds: Path, device: str):
     assert messages["EDS603"] == "Revision is 4 but the device answers 3 (class attribute 1)"
     assert messages["EDS604"].startswith("the device does not support attribute 99 of instance 1: general status "
                                          "0x14 (Attribute not supported)")
+    assert messages["EDS613"] == 'InterfaceLabel1 is "X1" but the device\'s instance 1 answers "X2" (attribute 10)'
     assert messages["EDS607"].startswith("the device has no assembly instance 101 (Connection2)")
 
 

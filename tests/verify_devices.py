@@ -28,7 +28,7 @@ MATCHING = {
                  "Product Revision": 2 | 3 << 8, "Product Name": "edsconv loopback adapter"},
     "classes": {"245": 4, "4": 2},
     "assemblies": {"100": [8, 2], "150": [4, 6]},
-    "objects": {"246": {"revision": 4, "instances": {"1": {"1": ["UDINT", 100]}}},
+    "objects": {"246": {"revision": 4, "instances": {"1": {"1": ["UDINT", 100], "10": ["SSTRING", "X1"]}}},
                 "100": {"revision": 1, "instances": {"1": {"1": ["UINT", 1500], "2": ["UINT", 7]}}}},
 }
 

@@ -59,7 +59,8 @@ def verify(path: Path, target: Target, connect: bool = False, strict: bool = Fal
     diagnostics: list[Diagnostic] = []
     with Session(target.host, target.port, target.timeout) as session:
         probe = checks.Probe(session, device, Context(eds, device))
-        for compare in (checks.identity, checks.object_classes, io.assembly_sizes, io.parameter_values):
+        for compare in (checks.identity, checks.object_classes, checks.ethernet_interfaces, io.assembly_sizes,
+                        io.parameter_values):
             diagnostics.extend(compare(probe))
         if strict:
             diagnostics.extend(checks.undeclared_objects(probe))

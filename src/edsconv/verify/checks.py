@@ -19,7 +19,9 @@ from edsconv.model.cip import ObjectClass
 from edsconv.verify import rules
 from edsconv.verify.client import ATTRIBUTE_NOT_SUPPORTED, Reply, Session
 
-IDENTITY_CLASS, ASSEMBLY_CLASS = 0x01, 0x04
+IDENTITY_CLASS, ASSEMBLY_CLASS, ETHERNET_LINK_CLASS = 0x01, 0x04, 0xF6
+#: Ethernet Link object instance attributes: 7 Interface Type (USINT), 10 Interface Label (SHORT_STRING)
+INTERFACE_TYPE, INTERFACE_LABEL = 7, 10
 #: objects every CIP device has (Identity, Message Router, Connection Manager): --strict does not ask for them
 EVERY_DEVICE_HAS = frozenset({0x01, 0x02, 0x06})
 
@@ -150,6 +152,32 @@ def _listed_attributes(probe: Probe, record: ObjectClass) -> Iterator[Diagnostic
             elif not reply.ok:
                 yield probe.at(rules.NOT_CHECKED, f"attribute {attribute} could not be read: {reply.words()}",
                                record.section, keyword, position)
+
+
+def ethernet_interfaces(probe: Probe) -> Iterator[Diagnostic]:
+    """InterfaceLabelN and InterfaceTypeN against instance N of the Ethernet Link object."""
+    link = probe.device.ethernet_link
+    if link is None or probe.read(ETHERNET_LINK_CLASS, 0, 1).absent:
+        return  # no object at all: EDS602 on the section says so, once
+    for interface in link.interfaces:
+        for keyword, attribute, expected in (("InterfaceLabel", INTERFACE_LABEL, interface.label),
+                                             ("InterfaceType", INTERFACE_TYPE, interface.interface_type)):
+            if expected is None:
+                continue
+            reply = probe.read(ETHERNET_LINK_CLASS, interface.instance, attribute)
+            keyword = f"{keyword}{interface.instance}"
+            if reply.absent:
+                yield probe.at(rules.INTERFACE_MISMATCH, f"{keyword}: the device has no Ethernet Link instance "
+                               f"{interface.instance}: {reply.words()}", "Ethernet Link Class", keyword)
+                break
+            found = (short_string(reply) if attribute == INTERFACE_LABEL else number(reply)) if reply.ok else None
+            if found is None:
+                yield probe.at(rules.NOT_CHECKED, f"{keyword} could not be read (attribute {attribute}): "
+                               f"{reply.words()}", "Ethernet Link Class", keyword)
+            elif found != expected:
+                yield probe.at(rules.INTERFACE_MISMATCH, f"{keyword} is {_shown(expected)} but the device's "
+                               f"instance {interface.instance} answers {_shown(found)} (attribute {attribute})",
+                               "Ethernet Link Class", keyword)
 
 
 def undeclared_objects(probe: Probe) -> Iterator[Diagnostic]:

@@ -207,3 +207,22 @@ NOT_CHECKED = rule(
     """),
     labels=TRIGGERS,
 )
+INTERFACE_MISMATCH = rule(
+    "EDS613", ERROR, OBJECT_CLASSES, "An Ethernet Link interface's label or type differs from the device's",
+    clause_note="InterfaceLabelN and InterfaceTypeN against instance N's attributes 10 (Interface Label) and 7 "
+    "(Interface Type)",
+    explanation="""
+        `InterfaceLabelN` or `InterfaceTypeN` of [Ethernet Link Class] is not what instance N
+        of the device's Ethernet Link object (0xF6) answers for attribute 10 or 7, or the
+        device has no instance N. Tools show the label to tell the ports apart; a label the
+        device does not carry sends the cable to the wrong port.
+    """,
+    bad=block("""
+        [Ethernet Link Class]
+                InterfaceLabel1 = "Port 1";     $ the device's instance 1 is labelled "X1"
+    """),
+    good=block("""
+        [Ethernet Link Class]
+                InterfaceLabel1 = "X1";
+    """),
+)

@@ -130,7 +130,7 @@ RULE_MODULES = ("edsconv.lint", "edsconv.suppress", "edsconv.eds.reader_rules", 
                 "edsconv.model.build", "edsconv.checks.structure_rules", "edsconv.checks.entity_rules",
                 "edsconv.checks.addressing_rules", "edsconv.checks.object_rules", "edsconv.merge",
                 "edsconv.xml.validate", "edsconv.xml.convert",
-                "edsconv.xml.device_read")
+                "edsconv.xml.device_read", "edsconv.verify.rules")
 
 
 @dataclass(frozen=True, slots=True)

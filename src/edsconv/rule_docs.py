@@ -106,6 +106,10 @@ We do not hold the current CIP specification, so the clause of these rules is th
 source of the fact: `eds-pie 1.2.0` (its references state the type, keyword list,
 class ID or required entry: an error) or `real files` (known from practice only: a
 warning at most). The message names the exact record."""),
+    RuleGroup("The device against its EDS (`edsconv verify`, EDS6xx)", ("EDS6",), """\
+Reported by `edsconv verify` (docs/verify.md, `src/edsconv/verify/`), never by lint: each
+compares what the running device answers (List Identity, Get_Attribute_Single, with
+`--connect` a Forward Open) with the EDS entry that states it, and is reported there."""),
     RuleGroup("XML profiles (`edsconv validate`)", ("XML0",)),
     RuleGroup("Conversion (`edsconv xml2eds`)", ("XML1", "XML2")),
 )

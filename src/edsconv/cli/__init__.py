@@ -53,6 +53,7 @@ class LazyGroup(click.Group):
         "diff": "edsconv.cli.diff:diff_command",
         "merge": "edsconv.cli.merge:merge_command",
         "lsp": "edsconv.cli.lsp:lsp_command",
+        "verify": "edsconv.cli.verify:verify_command",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -18,6 +18,7 @@ from edsconv import spec_tables as tables
 from edsconv.eds.locate import value_end
 from edsconv.eds.syntax import Entry, Field
 from edsconv.lsp.analysis import Analysis
+from edsconv.lsp.hover import data_type_of
 from edsconv.lsp.positions import Positions
 from edsconv.model.values import ValueProblem, to_integer
 
@@ -80,12 +81,8 @@ def _field_label(analysis: Analysis, entry: Entry, field_spec: tables.FieldSpec,
 
 
 def _data_type_name(item: Field) -> str:
-    try:
-        code = to_integer(item.value, "USINT")
-    except ValueProblem:
-        return ""
-    data_type = tables.DATA_TYPES_BY_CODE.get(code) or tables.OBSOLETE_DATA_TYPE_IDS.get(code)
-    return data_type.name if data_type is not None else ""
+    found = data_type_of(item)
+    return found[1].name if found is not None and found[1] is not None else ""
 
 
 def _bits_label(analysis: Analysis, entry: Entry, table_name: str, item: Field) -> str:

@@ -17,5 +17,12 @@ def lsp_command(stdio: bool) -> int:
     except ImportError as error:
         click.echo(f"edsconv lsp needs the lsp extra: pip install 'edsconv[lsp]' ({error})", err=True)
         return EXIT_USAGE
-    create_server().start_io()
+    create_server(show_renderer=_show_text).start_io()
     return EXIT_CLEAN
+
+
+def _show_text(document: dict) -> str:
+    """The show document as ``edsconv show`` prints it to a pipe (the ``edsconv.showDevice`` command)."""
+    from edsconv.cli.show import plain_text
+
+    return plain_text(document)

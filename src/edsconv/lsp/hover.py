@@ -135,12 +135,21 @@ def _path_text(value: String, device: Device) -> str:
     return f"Path: {decoded['summary']}" if decoded and decoded["summary"] else ""
 
 
-def _data_type_text(item: Field) -> str:
+def data_type_of(item: Field) -> tuple[int, tables.DataType | None] | None:
+    """The code a Data Type field holds and the type it names (Table C.16, obsolete codes included);
+    None when the field holds no USINT."""
     try:
         code = to_integer(item.value, "USINT")
     except ValueProblem:
+        return None
+    return code, tables.DATA_TYPES_BY_CODE.get(code) or tables.OBSOLETE_DATA_TYPE_IDS.get(code)
+
+
+def _data_type_text(item: Field) -> str:
+    found = data_type_of(item)
+    if found is None:
         return ""
-    data_type = tables.DATA_TYPES_BY_CODE.get(code) or tables.OBSOLETE_DATA_TYPE_IDS.get(code)
+    code, data_type = found
     if data_type is None:
         return f"`{item.raw}` is not a CIP data type code."
     obsolete = " (obsolete Table C.16 identifier)" if data_type.code != code else ""

@@ -17,15 +17,17 @@ from pygls.uris import to_fs_path
 
 from edsconv.lsp import actions, completion, hover, navigation, symbols
 from edsconv.lsp.analysis import Analyses, Analysis
+from edsconv.lsp.commands import ShowRenderer
 from edsconv.lsp.diagnostics import CHANGE_DELAY, Publisher
 from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings, settings_for
+from edsconv.lsp.workspace import WorkspaceChecker
 
 NAME = "edsconv"
 
 
 class EdsLanguageServer(LanguageServer):
-    def __init__(self) -> None:
+    def __init__(self, show_renderer: ShowRenderer | None = None) -> None:
         try:
             version = metadata.version("edsconv")
         except metadata.PackageNotFoundError:
@@ -33,10 +35,21 @@ class EdsLanguageServer(LanguageServer):
         super().__init__(NAME, version, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
         self.analyses = Analyses()
         self.publisher = Publisher(self, self.analyses, self.settings)
+        self.show_renderer = show_renderer
+        self.workspace_checker = WorkspaceChecker(self.publish_file, self.settings,
+                                                  lambda: self.workspace.position_codec)
+
+    def publish_file(self, uri: str, diagnostics: list[types.Diagnostic]) -> None:
+        """Publish the diagnostics of a file no editor has open (the workspace's background check)."""
+        if uri not in self.workspace.text_documents:
+            self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics))
+
+    def folders(self) -> list[str]:
+        """The paths of the workspace folders."""
+        return [to_fs_path(folder.uri) or "" for folder in self.workspace.folders.values()]
 
     def settings(self, uri: str) -> Settings:
-        folders = [to_fs_path(folder.uri) or "" for folder in self.workspace.folders.values()]
-        return settings_for(to_fs_path(uri), folders)
+        return settings_for(to_fs_path(uri), self.folders())
 
     async def current(self, uri: str) -> tuple[Analysis, Positions]:
         """The analysis of the document's text as it is now, and its position converter."""
@@ -45,12 +58,19 @@ class EdsLanguageServer(LanguageServer):
         return analysis, Positions(self.workspace.position_codec, analysis.lines)
 
 
-def create_server() -> EdsLanguageServer:
-    """A server with every feature registered; ``start_io()`` runs it on stdin/stdout."""
-    server = EdsLanguageServer()
+def create_server(show_renderer: ShowRenderer | None = None) -> EdsLanguageServer:
+    """A server with every feature registered; ``start_io()`` runs it on stdin/stdout.
+
+    ``show_renderer`` lays out the show document as text for the ``edsconv.showDevice`` command
+    (the command line's layout; without it the command answers with the document only).
+    """
+    from edsconv.lsp import features  # it names this module's server class in its handlers' annotations
+
+    server = EdsLanguageServer(show_renderer)
     _register_documents(server)
     _register_reading(server)
     _register_editing(server)
+    features.register(server)
     return server
 
 
@@ -71,6 +91,7 @@ def _register_documents(server: EdsLanguageServer) -> None:
     def did_close(ls: EdsLanguageServer, params: types.DidCloseTextDocumentParams) -> None:
         ls.publisher.clear(params.text_document.uri)
         ls.analyses.forget(params.text_document.uri)
+        ls.workspace_checker.closed(params.text_document.uri, ls.folders())
 
 
 def _register_reading(server: EdsLanguageServer) -> None:

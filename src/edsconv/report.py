@@ -30,8 +30,10 @@ SARIF_VERSION = "2.1.0"
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
 _GITHUB_COMMAND = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
-#: GitHub code scanning's published limit of results in one SARIF run; beyond it the upload is refused.
+#: GitHub code scanning's published limits of a SARIF upload: results in a run, and the gzip-compressed
+#: size of the file; beyond either the upload is refused (docs.github.com, "SARIF support for code scanning").
 SARIF_MAX_RESULTS = 25_000
+SARIF_MAX_GZIP_BYTES = 10 * 1000 * 1000
 #: How the summaries tell a user to see the notes left out by default.
 SHOW_NOTES = "--show-notes"
 
@@ -230,8 +232,9 @@ def sarif_document(reports: Sequence[Report], root: Path | None = None,
 
 
 def truncation_note(left_out: int, max_results: int) -> str:
-    return (f"{plural(left_out, 'result')} left out: GitHub code scanning accepts at most {max_results:,} "
-            f"results in a run; the most severe are kept. Lint with --format text to see them all.")
+    return (f"{plural(left_out, 'result')} left out: GitHub code scanning accepts at most {SARIF_MAX_RESULTS:,} "
+            f"results and {SARIF_MAX_GZIP_BYTES // 1000 // 1000} MB (gzip) in a run; the {max_results:,} most severe "
+            "are kept. Lint with --format text to see them all.")
 
 
 def _most_severe(reports: Sequence[Report], limit: int) -> set[int]:
@@ -264,8 +267,17 @@ def _sarif_fix(fix: Fix, location: dict) -> dict:
             "artifactChanges": [{"artifactLocation": location, "replacements": replacements}]}
 
 
-def format_sarif(reports: Sequence[Report], root: Path | None = None) -> str:
-    return json.dumps(sarif_document(reports, root), indent=2) + "\n"
+def format_sarif(reports: Sequence[Report], root: Path | None = None, max_results: int = SARIF_MAX_RESULTS,
+                 max_gzip_bytes: int = SARIF_MAX_GZIP_BYTES) -> str:
+    """The SARIF log within GitHub's limits: at most ``max_results`` results, and fewer (halved until it
+    fits) when the file would exceed ``max_gzip_bytes`` once compressed."""
+    import gzip
+
+    while True:
+        text = json.dumps(sarif_document(reports, root, max_results), indent=2) + "\n"
+        if max_results == 0 or len(gzip.compress(text.encode("utf-8"), 6)) <= max_gzip_bytes:
+            return text
+        max_results //= 2
 
 
 #: The fingerprint GitHub code scanning matches alerts by. Given here, the upload action does not compute
@@ -392,8 +404,8 @@ def counts(reports: Sequence[Report]) -> str:
     hidden = sum(getattr(r, "hidden_notes", 0) for r in reports)
     notes = plural(number[Severity.INFO], "note")
     if hidden:
-        notes = (f"{plural(hidden, 'note')} hidden ({SHOW_NOTES} shows them)" if not number[Severity.INFO]
-                 else f"{notes} ({hidden:,} more hidden: {SHOW_NOTES})")
+        notes = (f"{plural(hidden, 'note')} hidden (show with {SHOW_NOTES})" if not number[Severity.INFO]
+                 else f"{notes} ({hidden:,} more hidden: show with {SHOW_NOTES})")
     return (f"{plural(len(reports), 'file')}: {plural(number[Severity.ERROR], 'error')}, "
             f"{plural(number[Severity.WARNING], 'warning')}, {notes}")
 

@@ -124,7 +124,7 @@ def summary(reports: Sequence[FileReport], seconds: float, style: Style = PLAIN)
         lines.append(f"{style.paint(plural(with_errors, 'file'), Severity.ERROR)} with errors")
     top = Counter(d.code for d in found).most_common(TOP_RULES)
     if top:
-        lines.append("most found: " + ", ".join(f"{style.paint(code, 'code')} ({n:,})" for code, n in top))
+        lines.append("top rules: " + ", ".join(f"{style.paint(code, 'code')} ({n:,})" for code, n in top))
     fixed = sum(len(r.fixed) for r in reports)
     if fixed:
         lines.append(f"fixed {plural(fixed, 'problem')}")

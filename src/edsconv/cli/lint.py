@@ -87,8 +87,8 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
         return _print_diffs(reports)
     _write(_output(reports, output_format, statistics, colour))
     if output_format in ("text", *TEXT_FORMATS) and not statistics:
-        click.echo(summary(reports, time.monotonic() - started, Style(colour_wanted(colour, sys.stderr))),
-                   err=True, nl=False)
+        style = Style(colour_wanted(colour, sys.stderr))
+        click.echo(summary(reports, time.monotonic() - started, style), err=True, nl=False, color=style.colour)
     return exit_status(d for r in reports for d in r.diagnostics)
 
 

@@ -87,6 +87,7 @@ def test_text_format_and_exit_codes(tmp_path: Path):
     assert line.startswith(f"{broken}:{BROKEN_LINE}:{BROKEN_COLUMN}: error: EDS002 the entry is not ended by ';'")
     assert line.endswith("[C.4.1.2.2.8] [*]")  # --fix repairs it
     assert result.stderr.splitlines()[:2] == ["2 files: 1 error, 0 warnings, 0 notes", "1 file with errors"]
+    assert "top rules" not in result.stderr  # one finding: read in full
 
 
 def test_exit_codes_as_a_process(tmp_path: Path):

@@ -166,9 +166,11 @@ def test_force_color_colours_a_pipe(mixed: Path):
 # --- 5. the closing summary and --statistics -------------------------------------------------
 def test_summary_names_files_with_errors_top_rules_fixable_and_time(mixed: Path, tmp_path: Path):
     (tmp_path / "good.eds").write_bytes(GOOD)
+    for index in range(4):
+        (tmp_path / f"more{index}.eds").write_bytes(MIXED.replace(b"ProdCode = 01001;", b"ProdCode = 1001;"))
     lines = run("lint", "--isolated", str(tmp_path)).stderr.splitlines()
-    assert lines[0] == "2 files: 1 error, 1 warning, 1 note hidden (show with --show-notes)"
-    assert lines[1:4] == ["1 file with errors", "top rules: EDS103 (1), EDS005 (1)",
+    assert lines[0] == "6 files: 1 error, 5 warnings, 5 notes hidden (show with --show-notes)"
+    assert lines[1:4] == ["1 file with errors", "top rules: EDS005 (5), EDS103 (1)",
                           "[*] 1 fixable with `edsconv lint --fix`"]
     assert re.fullmatch(r"checked in \d+\.\d\d s", lines[-1])
 

@@ -87,18 +87,25 @@ def excerpt(lines: list[str], d: Diagnostic, style: Style = PLAIN) -> str:
     for a finding without a line (or a line the file no longer has)."""
     if not 0 < d.line <= len(lines):
         return ""
-    from edsconv.eds.locate import value_end
-
     text = lines[d.line - 1]
     column = max(d.column, 1)
     end = d.end_column if d.end_line == d.line and d.end_column and d.end_column > column \
-        else max(value_end(text, column), column + 1)
+        else _field_end(text, column)
     start = len(text[:column - 1].expandtabs(TAB_WIDTH))
     width = max(len(text[:end - 1].expandtabs(TAB_WIDTH)) - start, 1)
     number = str(d.line)
     gutter = style.paint(" " * len(number) + " |", "gutter")
     return (f"{gutter}\n{style.paint(number + ' |', 'gutter')} {printable(text.expandtabs(TAB_WIDTH))}\n"
             f"{gutter} {' ' * start}{style.paint('^' * width, d.severity)}\n")
+
+
+def _field_end(text: str, column: int) -> int:
+    """The column after the field at ``column``: a section header to its ``]``, any other value to its end."""
+    from edsconv.eds.locate import value_end
+
+    if text[column - 1:column] == "[" and "]" in text[column:]:
+        return text.index("]", column) + 2
+    return max(value_end(text, column), column + 1)
 
 
 def _source_lines(path: str) -> list[str]:
@@ -120,10 +127,10 @@ def summary(reports: Sequence[FileReport], seconds: float, style: Style = PLAIN)
     found = [d for r in reports for d in r.diagnostics]
     lines = [counts(reports)]
     with_errors = sum(any(d.severity is Severity.ERROR for d in r.diagnostics) for r in reports)
-    if with_errors:
+    if with_errors and len(reports) > 1:
         lines.append(f"{style.paint(plural(with_errors, 'file'), Severity.ERROR)} with errors")
     top = Counter(d.code for d in found).most_common(TOP_RULES)
-    if top:
+    if len(found) > TOP_RULES:  # a handful of findings are read in full; a list of rules says nothing more
         lines.append("top rules: " + ", ".join(f"{style.paint(code, 'code')} ({n:,})" for code, n in top))
     fixed = sum(len(r.fixed) for r in reports)
     if fixed:

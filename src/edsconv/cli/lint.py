@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 import sys
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -23,12 +23,31 @@ from edsconv.report_text import statistics as statistics_of
 FORMATS = ["text", *TEXT_FORMATS, *FORMATTERS]
 
 
+def output_options(command: Callable) -> Callable:
+    """What is shown and how: --format, --min-severity, --show-notes, --statistics, --color."""
+    for option in reversed([
+        click.option("--format", "output_format", type=click.Choice(FORMATS), default="text", show_default=True,
+                     help="text: full on a terminal, concise otherwise; concise: path:line:col: severity: CODE message "
+                     "[clause], one line each; full: each with the line at fault, a caret and its rule's link; json; "
+                     "sarif (2.1.0, for code scanning); github (workflow annotations, errors first, a summary "
+                     "line)."),
+        click.option("--min-severity", type=click.Choice([str(s) for s in Severity]), default=None,
+                     help="Leave out diagnostics below this severity (in every format) [default: warning: notes are "
+                     "counted, not shown]."),
+        click.option("--show-notes", is_flag=True, help="Show the notes too: --min-severity info."),
+        click.option("--statistics", is_flag=True,
+                     help="Print how often each rule was found (json with --format json) instead of the findings."),
+        click.option("--color", "colour", type=click.Choice(["auto", "always", "never"]), default="auto",
+                     show_default=True, help="Colour the text formats: auto colours a terminal unless NO_COLOR is set "
+                     "(FORCE_COLOR colours a pipe too)."),
+    ]):
+        command = option(command)
+    return command
+
+
 @click.command("lint", epilog=documentation("lint.md"))
 @click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True, path_type=Path))
-@click.option("--format", "output_format", type=click.Choice(FORMATS), default="text", show_default=True,
-              help="text: full on a terminal, concise otherwise; concise: path:line:col: severity: CODE message "
-              "[clause], one line each; full: each with the line at fault, a caret and its rule's link; json; "
-              "sarif (2.1.0, for code scanning); github (workflow annotations, errors first, and a summary line).")
+@output_options
 @click.option("--select", multiple=True, callback=rule_codes, metavar="CODES",
               help="Report only these codes or code prefixes (comma-separated, e.g. EDS0,EDS101); replaces the "
               "configuration's select and extend-select. A note named by its full code is shown.")
@@ -37,21 +56,12 @@ FORMATS = ["text", *TEXT_FORMATS, *FORMATTERS]
               "matching prefix wins over --select.")
 @click.option("--warnings-as-errors/--no-warnings-as-errors", default=None,
               help="Report warnings as errors, and fail on them [default: as the configuration says, else no].")
-@click.option("--min-severity", type=click.Choice([str(s) for s in Severity]), default=None,
-              help="Leave out diagnostics below this severity (in every format) [default: warning: notes are "
-              "counted, not shown].")
-@click.option("--show-notes", is_flag=True, help="Show the notes too: --min-severity info.")
 @click.option("--fix", "fix", flag_value=FixMode.FIX, default=None, type=click.UNPROCESSED,
               help="Repair the faults that have a safe fix ([*] in the text), write the files, and report what "
               "is left.")
 @click.option("--diff", "fix", flag_value=FixMode.DIFF, type=click.UNPROCESSED,
               help="Print the repairs --fix would make as a unified diff; write nothing (exit 1 when a file "
               "would change). Text only.")
-@click.option("--statistics", is_flag=True,
-              help="Print how often each rule was found (json with --format json) instead of the findings.")
-@click.option("--color", "colour", type=click.Choice(["auto", "always", "never"]), default="auto",
-              show_default=True, help="Colour the text formats: auto colours a terminal unless NO_COLOR is set "
-              "(FORCE_COLOR colours a pipe too).")
 @click.option("--config", "config_file", type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="Use this configuration file for every path instead of searching for one.")
 @click.option("--isolated", is_flag=True, help="Read no configuration file.")
@@ -71,8 +81,7 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
     bad configuration file, a path without any EDS file).
     """
     started = time.monotonic()
-    if fix is FixMode.DIFF and output_format not in ("text", *TEXT_FORMATS):
-        raise CannotRun(f"--diff prints a unified diff, not {output_format}: leave out --format {output_format}")
+    _refuse_diff_as(output_format, fix)
     overrides = Overrides(select, ignore, warnings_as_errors, config_file, isolated)
     with configuration():
         if show_settings:
@@ -85,11 +94,22 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
     at_least(reports, shown_from(min_severity, show_notes), named=select)
     if fix is FixMode.DIFF:
         return _print_diffs(reports)
-    _write(_output(reports, output_format, statistics, colour))
+    return _print(reports, output_format, statistics, colour, started)
+
+
+def _print(reports: list[FileReport], output_format: str, statistics: bool, colour: str, started: float) -> int:
+    """The findings (or ``--statistics``) on stdout; for people, the summary on stderr; the exit status."""
+    sys.stdout.write(_output(reports, output_format, statistics, colour))
+    sys.stdout.flush()
     if output_format in ("text", *TEXT_FORMATS) and not statistics:
         style = Style(colour_wanted(colour, sys.stderr))
         click.echo(summary(reports, time.monotonic() - started, style), err=True, nl=False, color=style.colour)
     return exit_status(d for r in reports for d in r.diagnostics)
+
+
+def _refuse_diff_as(output_format: str, fix: FixMode | None) -> None:
+    if fix is FixMode.DIFF and output_format not in ("text", *TEXT_FORMATS):
+        raise CannotRun(f"--diff prints a unified diff, not {output_format}: leave out --format {output_format}")
 
 
 def shown_from(min_severity: str | None, show_notes: bool) -> Severity:
@@ -110,11 +130,6 @@ def _output(reports: list[FileReport], output_format: str, statistics: bool, col
     if output_format in TEXT_FORMATS:
         return TEXT_FORMATS[output_format](reports, style)
     return FORMATTERS[output_format](reports)
-
-
-def _write(text: str) -> None:
-    sys.stdout.write(text)
-    sys.stdout.flush()
 
 
 @contextmanager

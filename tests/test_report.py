@@ -246,6 +246,7 @@ def test_microsofts_validator_with_githubs_rules_finds_nothing(tmp_path: Path):
     (tmp_path / "gone.eds").symlink_to(tmp_path / "deleted.eds")
     document = report.sarif_document(lint_paths([tmp_path], jobs=1), root=tmp_path)
     assert len(document["runs"][0]["results"]) == 2
+    assert "fixes" in document["runs"][0]["results"][0]  # EDS103's repair, judged by the validator too
     assert multitool_findings(tool, document, tmp_path) == []
     # the validator does judge: without informationUri and a region it warns (SARIF2005, SARIF2017)
     del document["runs"][0]["tool"]["driver"]["informationUri"]

@@ -225,6 +225,13 @@ def test_a_file_name_that_is_not_utf8_is_escaped_in_every_format(tmp_path: Path)
     assert github.startswith("::error file=caf\\xe9.eds,line=18,col=20,title=EDS103::")
 
 
+def test_a_finding_about_the_whole_file_stands_at_1_1_in_every_command():
+    """merge, validate and show print through Diagnostic.format: EDS401 and EDS000 were at 0:0."""
+    assert Diagnostic("EDS401", "no rack", path="adapter.eds").format() == "adapter.eds:1:1: error: EDS401 no rack"
+    document = json.loads(report.format_json([FileReport("a.eds", [Diagnostic("EDS000", "x", path="a.eds")])]))
+    assert (document["files"][0]["diagnostics"][0]["line"], document["files"][0]["diagnostics"][0]["column"]) == (1, 1)
+
+
 def test_singular_counts():
     d = Diagnostic("EDS001", "x", 1, 1, "a.eds")
     assert report.counts([FileReport("a.eds", [d])]) == "1 file: 1 error, 0 warnings, 0 notes"

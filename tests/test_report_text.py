@@ -118,6 +118,13 @@ def test_full_shows_the_line_with_a_caret_under_the_field_and_the_rule_link(mixe
     ]
 
 
+def test_full_shows_the_part_of_a_long_line_around_the_field():
+    d = Diagnostic("EDS103", "leading zeros", 1, 301, "long.eds", Severity.ERROR, "", 1, 305)
+    _, line, caret = report_text.excerpt(["x" * 300 + "0042" + "y" * 300], d).splitlines()
+    assert len(line) < 140 and line.startswith("1 | ...x") and line.endswith("y...")
+    assert line[caret.index("^"):caret.index("^") + 4] == "0042" and caret.endswith("^^^^")
+
+
 def test_text_is_concise_when_not_a_terminal(mixed: Path):
     """CliRunner's stdout is no terminal: CI logs and problem matchers get one line a finding."""
     text = run("lint", "--isolated", str(mixed)).stdout

@@ -25,6 +25,8 @@ _SGR = {Severity.ERROR: "1;31", Severity.WARNING: "1;33", Severity.INFO: "1;36",
 TOP_RULES = 5
 #: Tabs in an excerpt are shown as this many spaces, so that the caret stands under the field.
 TAB_WIDTH = 4
+#: A longer source line is shown as the part of this many characters around the field at fault.
+EXCERPT_WIDTH = 120
 FIX_COMMAND = "`edsconv lint --fix`"
 
 
@@ -91,11 +93,17 @@ def excerpt(lines: list[str], d: Diagnostic, style: Style = PLAIN) -> str:
     column = max(d.column, 1)
     end = d.end_column if d.end_line == d.line and d.end_column and d.end_column > column \
         else _field_end(text, column)
+    shown = text.expandtabs(TAB_WIDTH)
     start = len(text[:column - 1].expandtabs(TAB_WIDTH))
     width = max(len(text[:end - 1].expandtabs(TAB_WIDTH)) - start, 1)
+    if len(shown) > EXCERPT_WIDTH:  # a long line (an icon, a long string): the part around the field
+        left = max(start - EXCERPT_WIDTH // 4, 0)
+        shown = ("..." if left else "") + shown[left:left + EXCERPT_WIDTH] + \
+            ("..." if left + EXCERPT_WIDTH < len(shown) else "")
+        start, width = start - left + (3 if left else 0), min(width, EXCERPT_WIDTH - (start - left))
     number = str(d.line)
     gutter = style.paint(" " * len(number) + " |", "gutter")
-    return (f"{gutter}\n{style.paint(number + ' |', 'gutter')} {printable(text.expandtabs(TAB_WIDTH))}\n"
+    return (f"{gutter}\n{style.paint(number + ' |', 'gutter')} {printable(shown)}\n"
             f"{gutter} {' ' * start}{style.paint('^' * width, d.severity)}\n")
 
 

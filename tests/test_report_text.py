@@ -259,6 +259,15 @@ def test_sarif_keeps_the_most_severe_results_within_the_limit_and_says_how_many_
     assert notification["message"]["text"].startswith("7 results left out: GitHub code scanning accepts at most 25,000")
 
 
+def test_lint_says_on_stderr_what_the_sarif_left_out(tmp_path: Path, monkeypatch):
+    monkeypatch.setattr(report, "SARIF_MAX_RESULTS", 1)
+    monkeypatch.setattr(report.sarif_log, "__defaults__", (None, 1, report.SARIF_MAX_GZIP_BYTES))
+    (tmp_path / "mixed.eds").write_bytes(MIXED)
+    result = run("lint", "--isolated", "--format", "sarif", str(tmp_path / "mixed.eds"))
+    assert len(json.loads(result.stdout)["runs"][0]["results"]) == 1
+    assert result.stderr.startswith("edsconv: 1 result left out: GitHub code scanning accepts at most 1 results")
+
+
 def test_sarif_shrinks_to_stay_under_the_gzip_size_limit():
     text = report.format_sarif(_many(2_000), root=Path.cwd(), max_gzip_bytes=60_000)
     import gzip

@@ -269,14 +269,22 @@ def _sarif_fix(fix: Fix, location: dict) -> dict:
 
 def format_sarif(reports: Sequence[Report], root: Path | None = None, max_results: int = SARIF_MAX_RESULTS,
                  max_gzip_bytes: int = SARIF_MAX_GZIP_BYTES) -> str:
+    return sarif_log(reports, root, max_results, max_gzip_bytes)[0]
+
+
+def sarif_log(reports: Sequence[Report], root: Path | None = None, max_results: int = SARIF_MAX_RESULTS,
+              max_gzip_bytes: int = SARIF_MAX_GZIP_BYTES) -> tuple[str, str | None]:
     """The SARIF log within GitHub's limits: at most ``max_results`` results, and fewer (halved until it
-    fits) when the file would exceed ``max_gzip_bytes`` once compressed."""
+    fits) when the file would exceed ``max_gzip_bytes`` once compressed; and the note that says how many
+    results were left out (None when none was)."""
     import gzip
 
     while True:
-        text = json.dumps(sarif_document(reports, root, max_results), indent=2) + "\n"
+        document = sarif_document(reports, root, max_results)
+        text = json.dumps(document, indent=2) + "\n"
         if max_results == 0 or len(gzip.compress(text.encode("utf-8"), 6)) <= max_gzip_bytes:
-            return text
+            notes = document["runs"][0].get("invocations", [{}])[0].get("toolExecutionNotifications", [])
+            return text, notes[0]["message"]["text"] if notes else None
         max_results //= 2
 
 

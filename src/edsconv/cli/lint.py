@@ -15,7 +15,7 @@ from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, CannotRun, documentati
 from edsconv.config import ConfigError, Overrides, Resolver
 from edsconv.diagnostics import Severity
 from edsconv.lint import FixMode, at_least, lint_paths
-from edsconv.report import FORMATTERS, FileReport
+from edsconv.report import FORMATTERS, FileReport, sarif_log
 from edsconv.report_text import TEXT_FORMATS, Style, colour_wanted, format_statistics, format_text, summary
 from edsconv.report_text import statistics as statistics_of
 
@@ -129,6 +129,11 @@ def _output(reports: list[FileReport], output_format: str, statistics: bool, col
         return format_text(reports, style, terminal=sys.stdout.isatty())
     if output_format in TEXT_FORMATS:
         return TEXT_FORMATS[output_format](reports, style)
+    if output_format == "sarif":  # a log code scanning takes: a CI log says what it left out
+        text, left_out = sarif_log(reports)
+        if left_out:
+            click.echo(f"edsconv: {left_out}", err=True)
+        return text
     return FORMATTERS[output_format](reports)
 
 

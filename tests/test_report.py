@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from conftest import REPO
-from edsconv import report, report_text, rule_docs
+from edsconv import report, rule_docs
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.report import FileReport
 
@@ -33,7 +33,7 @@ def sample(root: Path) -> list[FileReport]:
 
 
 def test_text_is_path_line_column_severity_code_message_clause(tmp_path: Path):
-    lines = report_text.format_concise(sample(tmp_path)).splitlines()
+    lines = report.format_text(sample(tmp_path)).splitlines()  # what verify prints (lint: report_text)
     assert lines[0] == f"{tmp_path}/dir/bad file.eds:3:7: error: EDS001 unexpected 'x': expected ';' [C.4.1.2.2]"
     assert lines[1].startswith(f"{tmp_path}/dir/bad file.eds:9:1: warning: EDS005 ")
     assert lines[2].startswith(f"{tmp_path}/dir/bad file.eds:1:1: info: XML005 ")

@@ -418,5 +418,13 @@ def counts(reports: Sequence[Report]) -> str:
             f"{plural(number[Severity.WARNING], 'warning')}, {notes}")
 
 
-#: The formats of a machine; the text formats, for people, are :mod:`edsconv.report_text`'s.
-FORMATTERS = {"json": format_json, "sarif": format_sarif, "github": format_github}
+def format_text(reports: Sequence[FileReport]) -> str:
+    """``path:line:col: severity: CODE message [clause]``, one line per diagnostic: the text of commands
+    other than lint (lint also has ``full``, colour and a summary: :mod:`edsconv.report_text`)."""
+    from edsconv.report_text import format_concise
+
+    return format_concise(reports)
+
+
+#: Every command's output formats (lint adds ``concise`` and ``full``, and prints ``text`` as one of them).
+FORMATTERS = {"text": format_text, "json": format_json, "sarif": format_sarif, "github": format_github}

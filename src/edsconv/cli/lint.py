@@ -20,7 +20,7 @@ from edsconv.report_text import TEXT_FORMATS, Style, colour_wanted, format_stati
 from edsconv.report_text import statistics as statistics_of
 
 #: ``--format``: the text formats for people, then the formats of machines.
-FORMATS = ["text", *TEXT_FORMATS, *FORMATTERS]
+FORMATS = list(dict.fromkeys(["text", *TEXT_FORMATS, *FORMATTERS]))
 
 
 def output_options(command: Callable) -> Callable:

@@ -71,7 +71,8 @@ def test_directory_with_a_broken_and_a_canopen_file_reports_every_file(tree: Pat
     by_name = {Path(f["path"]).name: [d["code"] for d in f["diagnostics"]] for f in document["files"]}
     assert by_name == {"a.eds": [], "m_broken.eds": ["EDS002"], "odd.Eds": ["EDS002"], "b.EDS": [], "c.eds": [],
                        "n_canopen.eds": ["EDS010"], "z.eds": []}
-    assert document["summary"] == {"files": 7, "errors": 3, "warnings": 0}
+    assert document["summary"] == {"files": 7, "errors": 3, "warnings": 0, "notes": 0, "hidden_notes": 0,
+                                   "fixable": 2, "fixed": 0}
     assert all(f["error"] is None for f in document["files"])
 
 
@@ -84,8 +85,9 @@ def test_text_format_and_exit_codes(tmp_path: Path):
     assert result.return_value == 1
     (line,) = result.stdout.splitlines()
     assert line.startswith(f"{broken}:{BROKEN_LINE}:{BROKEN_COLUMN}: error: EDS002 the entry is not ended by ';'")
-    assert line.endswith("[C.4.1.2.2.8]")
-    assert result.stderr.strip() == "2 files: 1 errors, 0 warnings, 0 notes"
+    assert line.endswith("[C.4.1.2.2.8] [*]")  # --fix repairs it
+    assert result.stderr.splitlines()[:2] == ["2 files: 1 error, 0 warnings, 0 notes", "1 file with errors"]
+    assert "top rules" not in result.stderr  # one finding: read in full
 
 
 def test_exit_codes_as_a_process(tmp_path: Path):
@@ -181,7 +183,7 @@ def test_a_dangling_symbolic_link_in_a_directory_is_reported_not_skipped(tmp_pat
     result = run("lint", str(tmp_path))
     assert result.return_value == 1
     (line,) = result.stdout.splitlines()
-    assert line.startswith(f"{tmp_path / 'gone.EDS'}:0:0: error: EDS000 cannot read the file: it is a symbolic "
+    assert line.startswith(f"{tmp_path / 'gone.EDS'}:1:1: error: EDS000 cannot read the file: it is a symbolic "
                            f"link to {tmp_path / 'deleted.eds'}, which does not exist")
 
 
@@ -256,7 +258,8 @@ def test_no_progress_bar_when_piped(tmp_path: Path):
     result = edsconv("lint", str(tmp_path))
     assert result.returncode == 0
     assert result.stdout == ""
-    assert result.stderr == f"{lint.PROGRESS_THRESHOLD + 1} files: 0 errors, 0 warnings, 0 notes\n"
+    assert result.stderr.splitlines()[0] == f"{lint.PROGRESS_THRESHOLD + 1} files: 0 errors, 0 warnings, 0 notes"
+    assert result.stderr.splitlines()[-1].startswith("checked in ")
 
 
 def test_rules_lists_every_rule_sorted():

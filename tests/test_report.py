@@ -33,7 +33,7 @@ def sample(root: Path) -> list[FileReport]:
 
 
 def test_text_is_path_line_column_severity_code_message_clause(tmp_path: Path):
-    lines = report.format_text(sample(tmp_path)).splitlines()
+    lines = report.format_text(sample(tmp_path)).splitlines()  # what verify prints (lint: report_text)
     assert lines[0] == f"{tmp_path}/dir/bad file.eds:3:7: error: EDS001 unexpected 'x': expected ';' [C.4.1.2.2]"
     assert lines[1].startswith(f"{tmp_path}/dir/bad file.eds:9:1: warning: EDS005 ")
     assert lines[2].startswith(f"{tmp_path}/dir/bad file.eds:1:1: info: XML005 ")
@@ -48,7 +48,8 @@ def test_json_shape_is_files_with_diagnostics_and_a_summary(tmp_path: Path):
     assert {"code", "severity", "line", "column", "message", "clause"} <= set(first)
     assert first["severity"] == "error"
     assert document["files"][2]["error"] == "cannot read"
-    assert document["summary"] == {"files": 3, "errors": 2, "warnings": 1}
+    assert document["summary"] == {"files": 3, "errors": 2, "warnings": 1, "notes": 1, "hidden_notes": 0,
+                                   "fixable": 0, "fixed": 0}
 
 
 SARIF_SCHEMA = json.loads((REPO / "tests" / "sarif" / "sarif-2.1.0.json").read_text(encoding="utf-8"))
@@ -118,7 +119,8 @@ def test_sarif_rules_carry_their_documentation_and_the_declared_urls():
     assert eds002["properties"]["fix"] == "safe"
     # pyproject.toml's [project.urls] Repository, read from the installed metadata
     assert driver["informationUri"] == report.project_url() == "https://edsconv.invalid/edsconv"
-    assert eds002["helpUri"] == "https://edsconv.invalid/edsconv/blob/main/docs/rules.md#eds002"
+    # no public repository (the .invalid placeholder): the link opens the installed docs/rules.md
+    assert eds002["helpUri"] == (REPO / "docs" / "rules.md").as_uri() + "#eds002"
 
 
 def test_sarif_fingerprints_survive_moved_lines_and_tell_results_on_one_line_apart(tmp_path: Path):
@@ -164,11 +166,12 @@ def test_github_annotations_errors_first_then_warnings_then_notes_and_a_summary(
     lines = report.format_github(sample(tmp_path), root=tmp_path).splitlines()
     assert lines[0] == ("::error file=dir/bad file.eds,line=3,col=7,title=EDS001::"
                         "unexpected 'x': expected ';' [C.4.1.2.2]")
-    # no line: the annotation is on the file; errors of later files still come before any warning
-    assert lines[1] == "::error file=/elsewhere/broken.eds,title=EDS000::cannot read the file: Permission denied"
+    # no line: the annotation is on 1:1, as in SARIF; errors of later files still come before any warning
+    assert lines[1] == ("::error file=/elsewhere/broken.eds,line=1,col=1,title=EDS000::"
+                        "cannot read the file: Permission denied")
     assert lines[2].startswith("::warning file=dir/bad file.eds,line=9,col=1,title=EDS005::")
     assert lines[3].startswith("::notice ")
-    assert lines[4] == "edsconv: 3 files: 2 errors, 1 warnings, 1 notes"
+    assert lines[4] == "edsconv: 3 files: 2 errors, 1 warning, 1 note"
     assert len(lines) == 5
 
 
@@ -243,6 +246,7 @@ def test_microsofts_validator_with_githubs_rules_finds_nothing(tmp_path: Path):
     (tmp_path / "gone.eds").symlink_to(tmp_path / "deleted.eds")
     document = report.sarif_document(lint_paths([tmp_path], jobs=1), root=tmp_path)
     assert len(document["runs"][0]["results"]) == 2
+    assert "fixes" in document["runs"][0]["results"][0]  # EDS103's repair, judged by the validator too
     assert multitool_findings(tool, document, tmp_path) == []
     # the validator does judge: without informationUri and a region it warns (SARIF2005, SARIF2017)
     del document["runs"][0]["tool"]["driver"]["informationUri"]

@@ -72,7 +72,7 @@ def test_json_output_lists_files_with_kind_schema_and_summary():
     assert [(f["profile"], f["schema"], len(f["diagnostics"])) for f in report["files"]] == [
         ("ethernetip-commnet", "ENet_CommNet_Profile.xsd", 0), ("ethernetip-commnet", "ENet_CommNet_Profile.xsd", 1)]
     assert report["files"][1]["diagnostics"][0]["code"] == "XML003"
-    assert report["summary"] == {"files": 2, "errors": 1, "warnings": 0}
+    assert report["summary"] == {"files": 2, "errors": 1, "warnings": 0, "notes": 0}
 
 
 def test_schema_option_forces_a_schema():

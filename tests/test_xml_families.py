@@ -44,7 +44,7 @@ def test_a_family_without_schema_is_named_and_not_validated(kind: str, path: Pat
     assert not any(other in diagnostic.message for other in others)
     result = CliRunner().invoke(cli, ["validate", str(path)])
     assert result.exit_code == 0
-    assert result.stderr == "1 file: 0 errors, 0 warnings, 1 notes\n"
+    assert result.stderr == "1 file: 0 errors, 0 warnings, 1 note\n"
 
 
 @pytest.mark.parametrize(("kind", "path"), sorted(CIP_FILES.items()))
@@ -99,7 +99,7 @@ def test_validate_prints_the_summary_line_on_success_and_on_errors() -> None:
     good = CliRunner().invoke(cli, ["validate", str(CIP_FILES["cip-device"]), str(CIP_FILES["adsnet-device"])])
     assert (good.exit_code, good.stdout, good.stderr) == (0, "", "2 files: 0 errors, 0 warnings, 0 notes\n")
     bad = CliRunner().invoke(cli, ["validate", str(XML / "broken" / "not-well-formed.xml")])
-    assert bad.exit_code == 1 and bad.stderr == "1 file: 1 errors, 0 warnings, 0 notes\n"
+    assert bad.exit_code == 1 and bad.stderr == "1 file: 1 error, 0 warnings, 0 notes\n"
     assert CliRunner().invoke(cli, ["validate", "--format", "json", str(CIP_FILES["cip-device"])]).stderr == ""
 
 

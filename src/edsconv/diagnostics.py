@@ -228,8 +228,9 @@ class Diagnostic:
 
     def format(self) -> str:
         """``path:line:col: severity: CODE message [clause]``, as compilers print it (editors' problem matchers
-        read the severity there)."""
-        where = f"{self.path or '<string>'}:{self.line}:{self.column}"
+        read the severity there). A finding about the whole file stands at 1:1, as in every format
+        (``edsconv.report.position``: problem matchers need 1-based positions)."""
+        where = f"{self.path or '<string>'}:{max(self.line, 1)}:{max(self.column, 1)}"
         clause = f" [{self.clause}]" if self.clause else ""
         return f"{where}: {self.severity}: {self.code} {self.message}{clause}"
 

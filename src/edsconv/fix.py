@@ -160,6 +160,18 @@ def fix_for(eds: EdsFile, lines: list[str], diagnostic: Diagnostic) -> Fix | Non
     return fixer(eds, lines, diagnostic)
 
 
+def fixes_of(eds: EdsFile, data: bytes, diagnostics: Iterable[Diagnostic]) -> dict[tuple[str, int, int, str], Fix]:
+    """The safe fix of each diagnostic of the file ``data`` that has one, by
+    :func:`edsconv.report.fix_key` (what ``[*]`` marks and SARIF carries)."""
+    from edsconv.report import fix_key
+
+    fixable = [d for d in diagnostics if d.code in FIXERS]
+    if not fixable:
+        return {}
+    lines = split_lines(raw_text(data, eds.encoding))
+    return {fix_key(d): f for d in fixable if (f := fix_for(eds, lines, d)) is not None}
+
+
 def apply_edits(text: str, edits: Iterable[Edit]) -> str:
     """``text`` with ``edits`` made (they must not overlap); line ends stay as they are."""
     lines = split_lines(text)

@@ -26,7 +26,7 @@ from edsconv.config import FileRules, Overrides, Resolver
 from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, rule
 from edsconv.eds.reader import parse
 from edsconv.eds.syntax import EdsFile
-from edsconv.fix import fix_source, raw_text
+from edsconv.fix import fix_source, fixes_of, raw_text
 from edsconv.report import FileReport
 from edsconv.suppress import apply_suppressions
 
@@ -104,7 +104,9 @@ def lint_file(path: str, rules: FileRules = EVERY_RULE, fix: FixMode = FixMode.R
     try:
         data = Path(path).read_bytes()
         if fix is FixMode.REPORT:
-            return FileReport(path, check(parse(data, path), rules))
+            eds = parse(data, path)
+            diagnostics = check(eds, rules)
+            return FileReport(path, diagnostics, fixes=fixes_of(eds, data, diagnostics))
         return _fixed(path, data, rules, fix)
     except OSError as error:
         return _failed(path, _unreadable(path, error), rules.selection)
@@ -228,7 +230,15 @@ def _progress(items: Iterable, total: int) -> Iterable:
             progress.advance(task)
 
 
-def at_least(reports: Iterable[FileReport], severity: Severity) -> None:
-    """``--min-severity``: drop the diagnostics below ``severity``."""
+def at_least(reports: Iterable[FileReport], severity: Severity, named: Iterable[str] = ()) -> None:
+    """``--min-severity``: drop the diagnostics below ``severity``, but those of the rules ``named``
+    (``--select EDS321`` asks for that note); count the notes dropped (``hidden_notes``)."""
+    asked = frozenset(named)
     for report in reports:
-        report.diagnostics = [d for d in report.diagnostics if d.severity >= severity]
+        kept = [d for d in report.diagnostics if d.severity >= severity or d.code in asked]
+        report.hidden_notes = _notes(report.diagnostics) - _notes(kept)
+        report.diagnostics = kept
+
+
+def _notes(diagnostics: list[Diagnostic]) -> int:
+    return sum(d.severity is Severity.INFO for d in diagnostics)

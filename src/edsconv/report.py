@@ -10,22 +10,58 @@ This module is imported on the command line's start-up path: keep its imports li
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePath
-from typing import Any, Protocol
-from urllib.parse import quote
+from typing import TYPE_CHECKING, Any, Protocol
+from urllib.parse import quote, urlsplit
 
 from edsconv.diagnostics import Diagnostic, Rule, Severity, all_rules
+
+if TYPE_CHECKING:
+    from edsconv.fix import Fix
 
 SARIF_VERSION = "2.1.0"
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
 _GITHUB_COMMAND = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
+#: GitHub code scanning's published limits of a SARIF upload: results in a run, and the gzip-compressed
+#: size of the file; beyond either the upload is refused (docs.github.com, "SARIF support for code scanning").
+SARIF_MAX_RESULTS = 25_000
+SARIF_MAX_GZIP_BYTES = 10 * 1000 * 1000
+#: How the summaries tell a user to see the notes left out by default.
+SHOW_NOTES = "--show-notes"
+
+
+# --- output encoding: the one place names and positions are made fit for each format ---------------
+def printable(text: str) -> str:
+    """A file name or message as text, JSON and GitHub annotations print it: valid Unicode whatever the bytes.
+
+    A file name that is not UTF-8 reaches Python with lone surrogates (PEP 383); its bytes are
+    shown as ``\\xe9`` escapes, so that strict JSON parsers and UTF-8 terminals accept the output.
+    """
+    return text.encode("utf-8", "surrogateescape").decode("utf-8", "backslashreplace")
+
+
+def uri_path(path: PurePath) -> str:
+    """A path as a SARIF URI path: the file name's bytes percent-encoded (RFC 3986), UTF-8 or not."""
+    return quote(os.fsencode(path.as_posix()))
+
+
+def position(d: Diagnostic) -> tuple[int, int]:
+    """A diagnostic's line and column as the formats print them: a finding about the whole file (no
+    line, no column) stands at 1:1, as SARIF and editors' problem matchers need a 1-based position."""
+    return max(d.line, 1), max(d.column, 1)
+
+
+def fix_key(d: Diagnostic) -> tuple[str, int, int, str]:
+    """What identifies a diagnostic among its file's: the key of :attr:`FileReport.fixes`."""
+    return d.code, d.line, d.column, d.message
 
 
 class Report(Protocol):
@@ -46,26 +82,43 @@ class FileReport:
     fixed: list[Diagnostic] = field(default_factory=list)
     #: ``--diff``: the repair as a unified diff
     diff: str = ""
+    #: the safe fix of each diagnostic that has one here (by :func:`fix_key`): ``[*]`` and SARIF ``fixes``
+    fixes: dict[tuple[str, int, int, str], Fix] = field(default_factory=dict)
+    #: notes found but not shown (notes are shown on request: ``--show-notes``)
+    hidden_notes: int = 0
 
     def as_dict(self) -> dict:
-        return {"path": self.path, "diagnostics": [d.as_dict() for d in self.diagnostics], "error": self.error}
+        return {"path": printable(self.path), "diagnostics": [self._entry(d) for d in self.diagnostics],
+                "error": self.error and printable(self.error), "fixed": [self._entry(d) for d in self.fixed],
+                "hidden_notes": self.hidden_notes}
+
+    def fix_of(self, d: Diagnostic) -> Fix | None:
+        return self.fixes.get(fix_key(d))
+
+    def _entry(self, d: Diagnostic) -> dict:
+        line, column = position(d)
+        return {**d.as_dict(), "line": line, "column": column, "message": printable(d.message),
+                "fixable": fix_key(d) in self.fixes, "url": rule_help_uri(d.code)}
+
+
+def severity_counts(reports: Sequence[Report]) -> dict[Severity, int]:
+    diagnostics = [d for report in reports for d in report.diagnostics]
+    return {severity: sum(d.severity is severity for d in diagnostics) for severity in Severity}
 
 
 def summarise(reports: Sequence[Report]) -> dict:
-    diagnostics = [d for report in reports for d in report.diagnostics]
-    return {
-        "files": len(reports),
-        "errors": sum(d.severity is Severity.ERROR for d in diagnostics),
-        "warnings": sum(d.severity is Severity.WARNING for d in diagnostics),
-    }
+    number = severity_counts(reports)
+    summary = {"files": len(reports), "errors": number[Severity.ERROR], "warnings": number[Severity.WARNING],
+               "notes": number[Severity.INFO]}
+    if all(isinstance(r, FileReport) for r in reports):  # lint's own: fixes and hidden notes
+        lint_reports = [r for r in reports if isinstance(r, FileReport)]
+        summary |= {"hidden_notes": sum(r.hidden_notes for r in lint_reports),
+                    "fixable": sum(fix_key(d) in r.fixes for r in lint_reports for d in r.diagnostics),
+                    "fixed": sum(len(r.fixed) for r in lint_reports)}
+    return summary
 
 
-# --- text and json ----------------------------------------------------------------
-def format_text(reports: Iterable[Report]) -> str:
-    """``path:line:col: severity: CODE message [clause]``, one line per diagnostic."""
-    return "".join(d.format() + "\n" for report in reports for d in report.diagnostics)
-
-
+# --- json ----------------------------------------------------------------------------
 def json_document(reports: Sequence[Report]) -> dict:
     return {"files": [report.as_dict() for report in reports], "summary": summarise(reports)}
 
@@ -94,9 +147,28 @@ def project_url() -> str | None:
     return None
 
 
-def rule_help_uri(base: str, code: str) -> str:
-    """The anchor of a rule's ``### CODE`` heading in docs/rules.md, in the repository at ``base``."""
-    return f"{base}/blob/main/docs/rules.md#{code.lower()}"
+def rule_help_uri(code: str) -> str:
+    """Where rule ``code`` is documented: its ``### CODE`` heading in docs/rules.md.
+
+    In the project's repository when pyproject.toml declares a real one; while it declares the
+    ``.invalid`` placeholder (no public repository yet), in the documentation installed with the
+    package, as a ``file:`` URL that opens on this machine. Every link to a rule is made here:
+    SARIF ``helpUri``, the text and JSON formats, ``edsconv rules CODE`` and the language server.
+    """
+    base = project_url()
+    if base and not urlsplit(base).hostname.endswith(".invalid"):  # type: ignore[union-attr]
+        return f"{base}/blob/main/docs/rules.md#{code.lower()}"
+    return f"{_installed_rules_page()}#{code.lower()}"
+
+
+@functools.cache
+def _installed_rules_page() -> str:
+    from edsconv.resources import data_dir
+
+    try:
+        return (data_dir("docs") / "rules.md").as_uri()
+    except FileNotFoundError:  # an installation without its docs: the name still says where to look
+        return "docs/rules.md"
 
 
 def relative_to(path: str, root: Path) -> PurePath:
@@ -112,47 +184,108 @@ def artifact_location(path: str, root: Path) -> dict:
     """A relative uri (against ``%SRCROOT%``, the cwd) when the file lies below it, else an absolute file uri."""
     where = relative_to(path, root)
     if where.is_absolute():
-        return {"uri": Path(where).as_uri()}
-    return {"uri": quote(where.as_posix()), "uriBaseId": "%SRCROOT%"}
+        return {"uri": "file://" + uri_path(where)}
+    return {"uri": uri_path(where), "uriBaseId": "%SRCROOT%"}
 
 
-def sarif_document(reports: Sequence[Report], root: Path | None = None) -> dict:
-    """The SARIF log of a run: every rule with its documentation, one result per diagnostic."""
+def sarif_document(reports: Sequence[Report], root: Path | None = None,
+                   max_results: int = SARIF_MAX_RESULTS) -> dict:
+    """The SARIF log of a run: every rule with its documentation, one result per diagnostic (with its fix
+    when it has one), at most ``max_results`` of them: the most severe are kept, and a notification of the
+    run says how many were left out."""
     root = Path(os.path.abspath(root or Path.cwd()))
     rules = all_rules()
     index = {r.code: i for i, r in enumerate(rules)}
     base = project_url()
     driver: dict = {"name": "edsconv", "version": _version(), "semanticVersion": _version(),
-                    "rules": [_sarif_rule(r, base) for r in rules]}
+                    "rules": [_sarif_rule(r) for r in rules]}
     if base:
         driver["informationUri"] = base
+    kept = _most_severe(reports, max_results)
     results = []
     for report in reports:
         location = artifact_location(report.path, root)
         fingerprints = line_fingerprints(report.path, relative_to(report.path, root).as_posix(), report.diagnostics)
         for d, fingerprint in zip(report.diagnostics, fingerprints, strict=True):
-            # a finding about the whole file (no line) is placed on line 1, as code scanning needs a start line
-            physical: dict = {"artifactLocation": location, "region": _region(d) if d.line > 0 else {"startLine": 1}}
-            result: dict[str, Any] = {
-                "ruleId": d.code,
-                "level": _SARIF_LEVEL[d.severity],
-                "message": {"text": f"{d.message} [{d.clause}]" if d.clause else d.message},
-                "locations": [{"physicalLocation": physical}],
-                "partialFingerprints": {FINGERPRINT: fingerprint},
-            }
+            if id(d) not in kept:
+                continue
+            result = _sarif_result(d, location, fingerprint)
             if d.code in index:
                 result["ruleIndex"] = index[d.code]
+            fix = report.fix_of(d) if isinstance(report, FileReport) else None
+            if fix is not None:
+                result["fixes"] = [_sarif_fix(fix, location)]
             results.append(result)
-    run = {
+    run: dict[str, Any] = {
         "tool": {"driver": driver},
         "originalUriBaseIds": {"%SRCROOT%": {"uri": root.as_uri() + "/"}},
         "results": results,
     }
+    hidden = sum(getattr(r, "hidden_notes", 0) for r in reports)
+    if hidden:
+        run["properties"] = {"hiddenNotes": hidden}
+    left_out = sum(len(r.diagnostics) for r in reports) - len(results)
+    if left_out:
+        run["invocations"] = [{"executionSuccessful": True, "toolExecutionNotifications": [{
+            "level": "warning", "message": {"text": truncation_note(left_out, max_results)}}]}]
     return {"$schema": SARIF_SCHEMA, "version": SARIF_VERSION, "runs": [run]}
 
 
-def format_sarif(reports: Sequence[Report], root: Path | None = None) -> str:
-    return json.dumps(sarif_document(reports, root), indent=2) + "\n"
+def truncation_note(left_out: int, max_results: int) -> str:
+    return (f"{plural(left_out, 'result')} left out: GitHub code scanning accepts at most {SARIF_MAX_RESULTS:,} "
+            f"results and {SARIF_MAX_GZIP_BYTES // 1000 // 1000} MB (gzip) in a run; the {max_results:,} most severe "
+            "are kept. Lint with --format text to see them all.")
+
+
+def _most_severe(reports: Sequence[Report], limit: int) -> set[int]:
+    """The ids of the ``limit`` most severe diagnostics (in file order within a severity)."""
+    found = [d for report in reports for d in report.diagnostics]
+    if len(found) > limit:
+        found = sorted(found, key=lambda d: -d.severity)[:limit]  # stable: file order within a severity
+    return {id(d) for d in found}
+
+
+def _sarif_result(d: Diagnostic, location: dict, fingerprint: str) -> dict[str, Any]:
+    # a finding about the whole file (no line) is placed on line 1, as code scanning needs a start line
+    physical: dict = {"artifactLocation": location, "region": _region(d) if d.line > 0 else {"startLine": 1}}
+    message = printable(f"{d.message} [{d.clause}]" if d.clause else d.message)
+    return {
+        "ruleId": d.code,
+        "level": _SARIF_LEVEL[d.severity],
+        "message": {"text": message},
+        "locations": [{"physicalLocation": physical}],
+        "partialFingerprints": {FINGERPRINT: fingerprint},
+    }
+
+
+def _sarif_fix(fix: Fix, location: dict) -> dict:
+    """A safe fix as SARIF's ``fix``: the replacements of one artifact (columns as the result's region)."""
+    replacements = [{"deletedRegion": {"startLine": e.line, "startColumn": e.column, "endLine": e.end_line,
+                                       "endColumn": e.end_column},
+                     "insertedContent": {"text": e.text}} for e in fix.edits]
+    return {"description": {"text": fix.title},
+            "artifactChanges": [{"artifactLocation": location, "replacements": replacements}]}
+
+
+def format_sarif(reports: Sequence[Report], root: Path | None = None, max_results: int = SARIF_MAX_RESULTS,
+                 max_gzip_bytes: int = SARIF_MAX_GZIP_BYTES) -> str:
+    return sarif_log(reports, root, max_results, max_gzip_bytes)[0]
+
+
+def sarif_log(reports: Sequence[Report], root: Path | None = None, max_results: int = SARIF_MAX_RESULTS,
+              max_gzip_bytes: int = SARIF_MAX_GZIP_BYTES) -> tuple[str, str | None]:
+    """The SARIF log within GitHub's limits: at most ``max_results`` results, and fewer (halved until it
+    fits) when the file would exceed ``max_gzip_bytes`` once compressed; and the note that says how many
+    results were left out (None when none was)."""
+    import gzip
+
+    while True:
+        document = sarif_document(reports, root, max_results)
+        text = json.dumps(document, indent=2) + "\n"
+        if max_results == 0 or len(gzip.compress(text.encode("utf-8"), 6)) <= max_gzip_bytes:
+            notes = document["runs"][0].get("invocations", [{}])[0].get("toolExecutionNotifications", [])
+            return text, notes[0]["message"]["text"] if notes else None
+        max_results //= 2
 
 
 #: The fingerprint GitHub code scanning matches alerts by. Given here, the upload action does not compute
@@ -166,7 +299,7 @@ def line_fingerprints(path: str, relative: str, diagnostics: Sequence[Diagnostic
     """A fingerprint per diagnostic: a hash of the rule, the file, the text of its line and its message, and
     the count of earlier diagnostics with the same hash (``hash:N``). It stays the same when lines are
     added above, and differs for two results on one line unless rule and message are the same too."""
-    lines = _file_lines(path) if any(d.line > 0 for d in diagnostics) else []
+    lines = file_lines(path) if any(d.line > 0 for d in diagnostics) else []
     seen: dict[str, int] = {}
     found = []
     for d in diagnostics:
@@ -178,7 +311,8 @@ def line_fingerprints(path: str, relative: str, diagnostics: Sequence[Diagnostic
     return found
 
 
-def _file_lines(path: str) -> list[str]:
+def file_lines(path: str) -> list[str]:
+    """The lines of a file as the reader decodes it (none when it cannot be read)."""
     from edsconv.eds.source import decode
 
     try:
@@ -187,10 +321,10 @@ def _file_lines(path: str) -> list[str]:
         return []
 
 
-def _sarif_rule(r: Rule, base: str | None) -> dict:
+def _sarif_rule(r: Rule) -> dict:
     from edsconv.rule_docs import rule_help_text, rule_section
 
-    described = {
+    return {
         "id": r.code,
         "name": _rule_name(r.summary),
         "shortDescription": {"text": r.summary},
@@ -199,10 +333,8 @@ def _sarif_rule(r: Rule, base: str | None) -> dict:
         "defaultConfiguration": {"level": _SARIF_LEVEL[r.severity]},
         "properties": {"clause": r.clause, "import_blocking": r.import_blocking, "fix": str(r.fix),
                        "tags": ["EDS" if r.code.startswith("EDS") else "XML", f"ISO 15745-4 {r.clause}"]},
+        "helpUri": rule_help_uri(r.code),
     }
-    if base:
-        described["helpUri"] = rule_help_uri(base, r.code)
-    return described
 
 
 def _rule_name(summary: str) -> str:
@@ -249,33 +381,50 @@ def format_github(reports: Sequence[Report], root: Path | None = None) -> str:
     File paths are relative to ``root`` (the cwd: a workflow's repository checkout) when below it.
     """
     root = Path(os.path.abspath(root or Path.cwd()))
-    found = [(relative_to(report.path, root).as_posix(), d) for report in reports for d in report.diagnostics]
+    found = [(printable(relative_to(report.path, root).as_posix()), d)
+             for report in reports for d in report.diagnostics]
     found.sort(key=lambda item: -item[1].severity)  # stable: file order within a severity
     lines = [_annotation(path, d) for path, d in found]
     return "".join(lines) + f"edsconv: {counts(reports)}\n"
 
 
 def _annotation(path: str, d: Diagnostic) -> str:
-    properties = [f"file={escape_property(path)}"]
-    if d.line > 0:
-        properties.append(f"line={d.line}")
-        if d.column > 0:
-            properties.append(f"col={d.column}")
-        if d.end_line and d.end_line == d.line and d.end_column:
-            properties.append(f"endColumn={d.end_column}")
-        elif d.end_line:
-            properties.append(f"endLine={d.end_line}")
+    line, column = position(d)
+    properties = [f"file={escape_property(path)}", f"line={line}", f"col={column}"]
+    if d.end_line and d.end_line == d.line and d.end_column:
+        properties.append(f"endColumn={d.end_column}")
+    elif d.end_line:
+        properties.append(f"endLine={d.end_line}")
     properties.append(f"title={escape_property(d.code)}")
-    message = f"{d.message} [{d.clause}]" if d.clause else d.message
+    message = printable(f"{d.message} [{d.clause}]" if d.clause else d.message)
     return f"::{_GITHUB_COMMAND[d.severity]} {','.join(properties)}::{escape_data(message)}\n"
 
 
+def plural(number: int, noun: str) -> str:
+    """``1 error``, ``2 errors``, ``1,234 notes``."""
+    return f"{number:,} {noun}{'' if number == 1 else 's'}"
+
+
 def counts(reports: Sequence[Report]) -> str:
-    """``3 files: 1 errors, 2 warnings, 0 notes``: the summary line of a run."""
-    diagnostics = [d for report in reports for d in report.diagnostics]
-    number = {severity: sum(d.severity is severity for d in diagnostics) for severity in Severity}
-    return (f"{len(reports)} file{'s' if len(reports) != 1 else ''}: {number[Severity.ERROR]} errors, "
-            f"{number[Severity.WARNING]} warnings, {number[Severity.INFO]} notes")
+    """``3 files: 1 error, 2 warnings, 0 notes``: the first line of a run's summary; notes left out by
+    default are counted with a hint to show them."""
+    number = severity_counts(reports)
+    hidden = sum(getattr(r, "hidden_notes", 0) for r in reports)
+    notes = plural(number[Severity.INFO], "note")
+    if hidden:
+        notes = (f"{plural(hidden, 'note')} hidden (show with {SHOW_NOTES})" if not number[Severity.INFO]
+                 else f"{notes} ({hidden:,} more hidden: show with {SHOW_NOTES})")
+    return (f"{plural(len(reports), 'file')}: {plural(number[Severity.ERROR], 'error')}, "
+            f"{plural(number[Severity.WARNING], 'warning')}, {notes}")
 
 
+def format_text(reports: Sequence[FileReport]) -> str:
+    """``path:line:col: severity: CODE message [clause]``, one line per diagnostic: the text of commands
+    other than lint (lint also has ``full``, colour and a summary: :mod:`edsconv.report_text`)."""
+    from edsconv.report_text import format_concise
+
+    return format_concise(reports)
+
+
+#: Every command's output formats (lint adds ``concise`` and ``full``, and prints ``text`` as one of them).
 FORMATTERS = {"text": format_text, "json": format_json, "sarif": format_sarif, "github": format_github}

@@ -228,4 +228,8 @@ def format_rules(output_format: str, codes: Iterable[str] = ()) -> str:
         return rules_page()
     if output_format == "text" and not codes:
         return rules_table(rules)
+    if output_format == "text":  # each rule's text, and where it opens in the installed documentation
+        from edsconv.report import rule_help_uri
+
+        return "\n\n".join(f"{rule_section(r)}\n\nDocumentation: {rule_help_uri(r.code)}" for r in rules) + "\n"
     return "\n\n".join(rule_section(r) for r in rules) + "\n"

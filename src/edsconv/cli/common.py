@@ -94,10 +94,12 @@ def echo_diagnostics(diagnostics: Iterable[Diagnostic], err: bool = False) -> No
 
 
 def counts_line(subject: str, diagnostics: Iterable[Diagnostic], notes: bool = True) -> str:
-    """``subject: 2 errors, 1 warnings[, 0 notes]``: the summary lint and show print on stderr."""
+    """``subject: 2 errors, 1 warning[, 0 notes]``: the summary validate and show print on stderr."""
+    from edsconv.report import plural
+
     counts = Counter(d.severity for d in diagnostics)
-    line = f"{subject}: {counts[Severity.ERROR]} errors, {counts[Severity.WARNING]} warnings"
-    return line + (f", {counts[Severity.INFO]} notes" if notes else "")
+    line = f"{subject}: {plural(counts[Severity.ERROR], 'error')}, {plural(counts[Severity.WARNING], 'warning')}"
+    return line + (f", {plural(counts[Severity.INFO], 'note')}" if notes else "")
 
 
 def split_list(values: Iterable[str]) -> list[str]:

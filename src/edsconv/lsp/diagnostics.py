@@ -6,7 +6,6 @@ from __future__ import annotations
 import asyncio
 import functools
 from collections.abc import Callable
-from pathlib import Path
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
@@ -20,27 +19,16 @@ from edsconv.lsp.settings import Settings
 SOURCE = "edsconv"
 #: Seconds without a change before a changed document is checked again.
 CHANGE_DELAY = 0.3
-#: Stands in for the project's home page while pyproject.toml declares none in [project.urls]:
-#: the link then points at nothing, but still names the rule's heading in docs/rules.md.
-PLACEHOLDER_HOME = "https://edsconv.invalid"
 _SEVERITY = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning,
              Severity.INFO: types.DiagnosticSeverity.Information}
 
 
 @functools.cache
 def rule_documentation_url(code: str) -> str:
-    """Where a rule is documented: its heading in docs/rules.md, on the project's home page when the
-    installed package declares one; else in the checkout the package runs from; else under
-    :data:`PLACEHOLDER_HOME`. The one place that decides the ``codeDescription`` link."""
-    from edsconv.report import project_url, rule_help_uri
+    """Where a rule is documented (the ``codeDescription`` link): :func:`edsconv.report.rule_help_uri`."""
+    from edsconv.report import rule_help_uri
 
-    home = project_url()
-    if home:
-        return rule_help_uri(home, code)
-    checkout = Path(__file__).resolve().parents[3] / "docs" / "rules.md"
-    if checkout.is_file():
-        return f"{checkout.as_uri()}#{code.lower()}"
-    return rule_help_uri(PLACEHOLDER_HOME, code)
+    return rule_help_uri(code)
 
 
 def to_lsp(diagnostic: Diagnostic, analysis: Analysis, positions: Positions) -> types.Diagnostic:

@@ -46,6 +46,8 @@ class FileReport:
     fixed: list[Diagnostic] = field(default_factory=list)
     #: ``--diff``: the repair as a unified diff
     diff: str = ""
+    #: ``--fix``: why the repaired file could not be written (the file is unchanged; exit 2)
+    write_error: str | None = None
 
     def as_dict(self) -> dict:
         return {"path": self.path, "diagnostics": [d.as_dict() for d in self.diagnostics], "error": self.error}

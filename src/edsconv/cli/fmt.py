@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from edsconv.atomic import write_atomically
+from edsconv.atomic import rewrite_in_place
 from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE, CannotRun, documentation, reading, writing
 from edsconv.eds.canonical import format_bytes
 from edsconv.eds.reader import load
@@ -64,7 +64,7 @@ def format_file(path: Path, write: bool, show_diff: bool) -> tuple[str, int]:
         click.echo(f"would reformat {path}", err=True)
         return CHANGED, EXIT_FINDINGS
     with writing(path):
-        write_atomically(path, data, force=True)
+        rewrite_in_place(path, data)
     click.echo(f"reformatted {path}", err=True)
     return CHANGED, EXIT_CLEAN
 

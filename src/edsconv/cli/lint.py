@@ -9,15 +9,27 @@ from pathlib import Path
 
 import click
 
-from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, CannotRun, documentation, exit_status, rule_codes
+from edsconv.cli.common import (
+    EXIT_CLEAN,
+    EXIT_FINDINGS,
+    EXIT_USAGE,
+    CannotRun,
+    cannot_write,
+    documentation,
+    existing_paths,
+    exit_status,
+    files_to_work_on,
+    rule_codes,
+)
 from edsconv.config import ConfigError, Overrides, Resolver
 from edsconv.diagnostics import Severity
 from edsconv.lint import FixMode, at_least, lint_paths
+from edsconv.paths import discover
 from edsconv.report import FORMATTERS, FileReport, counts
 
 
 @click.command("lint", epilog=documentation("lint.md"))
-@click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True, path_type=Path))
+@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path), callback=existing_paths)
 @click.option("--format", "output_format", type=click.Choice(list(FORMATTERS)), default="text", show_default=True,
               help="text: path:line:col: severity: CODE message [clause]; json; sarif (2.1.0, for code scanning); "
               "github (workflow annotations, errors first, and a summary line).")
@@ -38,30 +50,34 @@ from edsconv.report import FORMATTERS, FileReport, counts
               "would change).")
 @click.option("--config", "config_file", type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="Use this configuration file for every path instead of searching for one.")
-@click.option("--isolated", is_flag=True, help="Read no configuration file.")
+@click.option("--isolated", is_flag=True, help="Read no configuration file (not with --config).")
+@click.option("--force-exclude", is_flag=True,
+              help="Leave out files named on the command line that a directory search would leave out (the "
+              "configuration's exclude, hidden directories); for pre-commit, which names every file.")
 @click.option("--show-settings", is_flag=True,
               help="Print the settings in force for each path and where they come from; check nothing.")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), default=None,
               help="Worker processes for many files [default: every core].")
 def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str, ...], ignore: tuple[str, ...],
                  warnings_as_errors: bool | None, min_severity: str, fix: FixMode | None, config_file: Path | None,
-                 isolated: bool, show_settings: bool, jobs: int | None) -> int:
+                 isolated: bool, force_exclude: bool, show_settings: bool, jobs: int | None) -> int:
     """Check EDS files, and directories recursively for *.eds files (any letter case).
 
     Settings come from [tool.edsconv] in pyproject.toml or from edsconv.toml, found
     by walking up from each file; options override them. Exit status: 0 no errors,
     1 errors found (--diff: a file would change), 2 could not run (a bad option, a
-    bad configuration file, a path without any EDS file).
+    bad configuration file, a path without any EDS file, a fixed file that cannot be written).
     """
+    if config_file is not None and isolated:
+        raise click.UsageError("--isolated reads no configuration file: it cannot be used with --config")
     overrides = Overrides(select, ignore, warnings_as_errors, config_file, isolated)
     with configuration():
+        resolver = Resolver(overrides)
         if show_settings:
-            resolver = Resolver(overrides)
             click.echo("\n".join(resolver.settings_for(p).describe(p) for p in paths), nl=False)
             return EXIT_CLEAN
-        reports = lint_paths(paths, jobs=jobs, overrides=overrides, fix=fix or FixMode.REPORT)
-    if not reports:  # a CI job pointed at the wrong folder must not pass
-        raise CannotRun(f"no EDS file (*.eds) found in {', '.join(str(p) for p in paths)}; nothing checked")
+        found = files_to_work_on(discover(paths, resolver, force_exclude=force_exclude), paths)
+        reports = lint_paths(paths, jobs=jobs, overrides=overrides, fix=fix or FixMode.REPORT, found=found)
     at_least(reports, Severity[min_severity.upper()])
     if fix is FixMode.DIFF:
         return _print_diffs(reports)
@@ -69,7 +85,10 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
     sys.stdout.flush()
     if output_format == "text":
         click.echo(summary(reports), err=True)
-    return exit_status(d for r in reports for d in r.diagnostics)
+    unwritten = [r for r in reports if r.write_error is not None]
+    for report in unwritten:  # the findings are printed above; the run could not do what --fix asked
+        click.echo(cannot_write(report.path, str(report.write_error)), err=True)
+    return EXIT_USAGE if unwritten else exit_status(d for r in reports for d in r.diagnostics)
 
 
 @contextmanager

@@ -192,7 +192,10 @@ def settings_for(path: str | Path, overrides: Overrides = Overrides()) -> Settin
 
 
 def _configures(path: Path) -> bool:
-    if not path.is_file():
+    try:
+        if not path.is_file():
+            return False
+    except OSError:  # a directory that cannot be searched holds no configuration edsconv can read
         return False
     if path.name != "pyproject.toml":
         return True

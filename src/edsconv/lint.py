@@ -26,7 +26,7 @@ from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, rul
 from edsconv.eds.reader import parse
 from edsconv.eds.syntax import EdsFile
 from edsconv.fix import fix_source, raw_text
-from edsconv.parallel import run_all
+from edsconv.parallel import file_size, run_all
 from edsconv.paths import Found
 from edsconv.paths import discover as find
 from edsconv.report import FileReport
@@ -160,7 +160,7 @@ def lint_paths(paths: Iterable[str | Path], select: Sequence[str] = (), ignore: 
     found = found or find(paths, resolver)
     tasks = [(f, resolver.settings_for(f).for_file(f), fix) for f in found.files]
     reports = run_all(lint_file, tasks, jobs or os.cpu_count() or 1, "linting", died=_died,
-                      sizes=[_size(f) for f in found.files])
+                      sizes=[file_size(f) for f in found.files])
     return reports + [_failed(directory, f"cannot search the directory: {reason}",
                               resolver.settings_for(directory).for_file(directory).selection)
                       for directory, reason in found.unsearchable]
@@ -169,13 +169,6 @@ def lint_paths(paths: Iterable[str | Path], select: Sequence[str] = (), ignore: 
 def _died(task: tuple, message: str) -> FileReport:
     path, rules, _ = task
     return _failed(path, message, rules.selection)
-
-
-def _size(path: str) -> int:
-    try:
-        return os.stat(path).st_size
-    except OSError:
-        return 0
 
 
 def at_least(reports: Iterable[FileReport], severity: Severity) -> None:

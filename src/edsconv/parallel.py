@@ -13,6 +13,7 @@ Heavy imports (concurrent.futures, rich) happen inside the functions that need t
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Any, TypeVar
@@ -91,6 +92,14 @@ def _end_workers(pool: Any) -> None:
         if process.is_alive():
             process.kill()
             process.join(GRACE_SECONDS)
+
+
+def file_size(path: str) -> int:
+    """The size of a file, for :func:`run_all`'s ``sizes`` (0 when it cannot be read: it fails fast)."""
+    try:
+        return os.stat(path).st_size
+    except OSError:
+        return 0
 
 
 def progress(items: Iterable, total: int, label: str) -> Iterator:

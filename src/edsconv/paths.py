@@ -50,6 +50,8 @@ class Found:
     unsearchable: list[tuple[str, str]] = field(default_factory=list)
     #: the directories named on the command line in which no EDS file was found
     empty: list[str] = field(default_factory=list)
+    #: the files named on the command line that ``force_exclude`` left out
+    excluded: list[str] = field(default_factory=list)
 
 
 def missing(paths: Iterable[str | Path]) -> list[str]:
@@ -70,6 +72,7 @@ def discover(paths: Iterable[str | Path], resolver: Resolver | None = None, *,
             if not below and not found.unsearchable[unsearchable:]:
                 found.empty.append(str(path))
         elif force_exclude and _named_file_excluded(path, resolver):
+            found.excluded.append(str(path))
             continue
         else:
             below = [str(path)]

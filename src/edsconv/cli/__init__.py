@@ -25,7 +25,14 @@ from typing import Any
 
 import click
 
-from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE, CannotRun
+from edsconv.cli.common import (
+    EXIT_CLEAN,
+    EXIT_FINDINGS,
+    EXIT_USAGE,
+    CannotRun,
+    ClosedOutput,
+    cannot_write_standard_output,
+)
 from edsconv.signals import Interrupted, signals_interrupt
 
 #: Set (to anything but empty or 0) to print the traceback of an unexpected error, as ``--debug`` does.
@@ -71,7 +78,7 @@ class LazyGroup(click.Group):
             raise
         except BrokenPipeError as error:  # the reader of standard output left: stop writing to it
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-            raise CannotRun(f"<stdout>: cannot write: {error.strerror}") from error
+            raise CannotRun(cannot_write_standard_output(error.strerror or "Broken pipe")) from error
         except OSError as error:  # reads and writes go through reading() / writing(); this is one they missed
             _print_traceback_if(ctx.params.get("debug", False))
             raise CannotRun(f"{error.filename if error.filename is not None else 'edsconv'}: "
@@ -104,6 +111,8 @@ def _exit_with(ctx: click.Context, code: int | None, **options: object) -> None:
 
 def main() -> None:
     """Entry point: exit codes as in the module docstring; usage errors and :class:`CannotRun` are 2."""
+    if sys.stdout is None:  # started with standard output closed (>&-): a write says so, whatever the command
+        sys.stdout = ClosedOutput()
     try:
         with signals_interrupt():
             # Without standalone mode click returns the code of ctx.exit() ...

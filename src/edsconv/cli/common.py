@@ -11,9 +11,11 @@ This module is loaded by every command, ``parse`` included: keep its imports lig
 
 from __future__ import annotations
 
+import io
+import os
 from collections import Counter
 from collections.abc import Iterable, Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
@@ -41,6 +43,28 @@ class CannotRun(click.ClickException):
     def show(self, file: IO[Any] | None = None) -> None:
         # click would prefix "Error: "; the message already starts with the file it is about
         click.echo(self.message, err=True)
+
+
+def cannot_write_standard_output(reason: str) -> str:
+    """The one line every command prints when its standard output is closed or its reader has gone."""
+    return f"edsconv: cannot write to standard output: {reason}"
+
+
+class ClosedOutput(io.TextIOBase):
+    """Standard output when the command was started without one (``>&-``): writing to it cannot run."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        with suppress(OSError):  # keep descriptor 1 taken, so that no file the command opens becomes it
+            os.fstat(1)
+            return
+        os.open(os.devnull, os.O_WRONLY)
+
+    def writable(self) -> bool:
+        return True
+
+    def write(self, text: str) -> int:
+        raise CannotRun(cannot_write_standard_output("it is closed"))
 
 
 @contextmanager
@@ -73,6 +97,17 @@ def cannot_write(path: object, reason: str) -> str:
     return f"{path}: cannot write: {reason}"
 
 
+@contextmanager
+def configuration() -> Iterator[None]:
+    """A bad configuration file cannot run: ``path:line: reason``, exit 2."""
+    from edsconv.config import ConfigError
+
+    try:
+        yield
+    except ConfigError as error:
+        raise CannotRun(str(error)) from error
+
+
 def existing_paths(ctx: click.Context, param: click.Parameter, value: tuple[Path, ...]) -> tuple[Path, ...]:
     """Argument callback: paths that exist (a dangling link or an unreadable file exists: the command
     reports it and goes on; a path that is not there at all is a typo, exit 2)."""
@@ -86,8 +121,9 @@ def existing_paths(ctx: click.Context, param: click.Parameter, value: tuple[Path
 
 def files_to_work_on(found: Found, paths: Iterable[Path]) -> Found:
     """What :func:`edsconv.paths.discover` found, after the rule's messages: a warning for each named
-    directory without an EDS file; :class:`CannotRun` when nothing at all was found."""
-    if not found.files and not found.unsearchable:  # a CI job pointed at the wrong folder must not pass
+    directory without an EDS file; :class:`CannotRun` when nothing at all was found (files that
+    ``--force-exclude`` left out are not nothing: pre-commit names only excluded files in some commits)."""
+    if not (found.files or found.unsearchable or found.excluded):  # a CI job pointed at the wrong folder fails
         raise CannotRun(f"no EDS file (*.eds) found in {', '.join(str(p) for p in paths)}; nothing checked")
     for directory in found.empty:
         click.echo(f"edsconv: warning: no EDS file (*.eds) found in {directory}", err=True)

@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import click
@@ -13,15 +11,15 @@ from edsconv.cli.common import (
     EXIT_CLEAN,
     EXIT_FINDINGS,
     EXIT_USAGE,
-    CannotRun,
     cannot_write,
+    configuration,
     documentation,
     existing_paths,
     exit_status,
     files_to_work_on,
     rule_codes,
 )
-from edsconv.config import ConfigError, Overrides, Resolver
+from edsconv.config import Overrides, Resolver
 from edsconv.diagnostics import Severity
 from edsconv.lint import FixMode, at_least, lint_paths
 from edsconv.paths import discover
@@ -29,7 +27,8 @@ from edsconv.report import FORMATTERS, FileReport, counts
 
 
 @click.command("lint", epilog=documentation("lint.md"))
-@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path), callback=existing_paths)
+@click.argument("paths", nargs=-1, required=True, type=click.Path(readable=False, path_type=Path),
+                callback=existing_paths)
 @click.option("--format", "output_format", type=click.Choice(list(FORMATTERS)), default="text", show_default=True,
               help="text: path:line:col: severity: CODE message [clause]; json; sarif (2.1.0, for code scanning); "
               "github (workflow annotations, errors first, and a summary line).")
@@ -89,15 +88,6 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
     for report in unwritten:  # the findings are printed above; the run could not do what --fix asked
         click.echo(cannot_write(report.path, str(report.write_error)), err=True)
     return EXIT_USAGE if unwritten else exit_status(d for r in reports for d in r.diagnostics)
-
-
-@contextmanager
-def configuration() -> Iterator[None]:
-    """A bad configuration file cannot run: ``path:line: reason``, exit 2."""
-    try:
-        yield
-    except ConfigError as error:
-        raise CannotRun(str(error)) from error
 
 
 def _print_diffs(reports: list[FileReport]) -> int:

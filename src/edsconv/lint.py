@@ -5,8 +5,9 @@
 the suppressions its comments state (:mod:`edsconv.suppress`), on every core when
 there are enough of them, and returns one :class:`~edsconv.report.FileReport` per
 file in a stable order; ``--fix`` repairs what :mod:`edsconv.fix` can. A file that
-cannot be read, or on which edsconv itself fails, gives an ``EDS000``
-diagnostic: one broken file never stops the run.
+cannot be read (or a directory that cannot be searched), or on which edsconv itself
+fails, gives an ``EDS000`` diagnostic: one broken file never stops the run. Which files
+are checked is :mod:`edsconv.paths`'s rule; running them in workers, :mod:`edsconv.parallel`'s.
 
 Heavy imports (rich, concurrent.futures) happen inside the functions that need
 them.
@@ -37,9 +38,10 @@ INTERNAL_ERROR = rule(
     "edsconv could not check this file: it is unreadable, or edsconv failed on it (please report that)",
     explanation="""
         edsconv could not check this file: the file could not be read (permissions, a
-        directory named like a file, a file removed during the run) or edsconv failed on
-        it. The message says which. An internal failure is a bug in edsconv: please
-        report it with the file. The rest of the run goes on; the other files are
+        dangling symbolic link, a file removed during the run), a directory below a
+        searched one could not be searched (its files were never seen), or edsconv
+        failed on it. The message says which. An internal failure is a bug in edsconv:
+        please report it with the file. The rest of the run goes on; the other files are
         reported as usual.
     """,
     bad="""

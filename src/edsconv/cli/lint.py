@@ -84,10 +84,15 @@ def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str,
     sys.stdout.flush()
     if output_format == "text":
         click.echo(summary(reports), err=True)
+    return _unwritten(reports) or exit_status(d for r in reports for d in r.diagnostics)
+
+
+def _unwritten(reports: list[FileReport]) -> int:
+    """``--fix``: a line for each fixed file that could not be written, after the findings; exit 2 if any."""
     unwritten = [r for r in reports if r.write_error is not None]
-    for report in unwritten:  # the findings are printed above; the run could not do what --fix asked
+    for report in unwritten:
         click.echo(cannot_write(report.path, str(report.write_error)), err=True)
-    return EXIT_USAGE if unwritten else exit_status(d for r in reports for d in r.diagnostics)
+    return EXIT_USAGE if unwritten else EXIT_CLEAN
 
 
 def _print_diffs(reports: list[FileReport]) -> int:

@@ -82,7 +82,8 @@ def _completed(futures: Iterable) -> Iterator:
 
 def _end_workers(pool: Any) -> None:
     """Cancel what has not started and end every worker: SIGTERM, then SIGKILL for one that lingers."""
-    processes = list((pool._processes or {}).values())  # the executor has no public way before Python 3.14
+    # the executor has no public way to do this before Python 3.14
+    processes, manager = list((pool._processes or {}).values()), pool._executor_manager_thread
     pool.shutdown(wait=False, cancel_futures=True)
     for process in processes:
         if process.is_alive():
@@ -92,6 +93,8 @@ def _end_workers(pool: Any) -> None:
         if process.is_alive():
             process.kill()
             process.join(GRACE_SECONDS)
+    if manager is not None:  # it closes its wake-up pipe as it ends; at exit, Python would write to it
+        manager.join(GRACE_SECONDS)
 
 
 def file_size(path: str) -> int:

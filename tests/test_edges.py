@@ -322,3 +322,22 @@ def test_a_signal_stops_a_parallel_run_within_a_second(tmp_path: Path, command: 
     assert not {pid for pid in workers if Path(f"/proc/{pid}").exists() and
                 (Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z")}, "a worker lives on"
     assert not list((tmp_path / "tree").glob(".*.tmp")), "a temporary file was left"
+
+
+def test_a_directory_named_twice_or_inside_another_is_not_called_empty(tmp_path: Path) -> None:
+    (tmp_path / "d" / "sub").mkdir(parents=True)
+    (tmp_path / "d" / "sub" / "x.eds").write_bytes(GOOD)
+    found = paths.discover([tmp_path / "d", tmp_path / "d" / "sub", tmp_path / "d"])
+    assert (found.files, found.empty) == ([str(tmp_path / "d" / "sub" / "x.eds")], [])
+
+
+def test_a_named_file_below_a_directory_that_cannot_be_searched_is_eds000(tmp_path: Path) -> None:
+    (tmp_path / "locked").mkdir()
+    (tmp_path / "locked" / "x.eds").write_bytes(GOOD)
+    (tmp_path / "locked").chmod(0)
+    try:
+        result = edsconv("lint", tmp_path / "locked" / "x.eds", prefix=without_root_override())
+    finally:
+        (tmp_path / "locked").chmod(0o755)
+    assert result.returncode == 1, result.stderr
+    assert "EDS000 cannot read the file: Permission denied" in result.stdout

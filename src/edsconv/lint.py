@@ -130,9 +130,8 @@ def _fixed(path: str, data: bytes, rules: FileRules, fix: FixMode) -> FileReport
 
 
 def _unreadable(path: str, error: OSError) -> str:
-    where = Path(path)
-    if where.is_symlink() and not where.exists():
-        return f"cannot read the file: it is a symbolic link to {os.readlink(where)}, which does not exist"
+    if isinstance(error, FileNotFoundError) and os.path.islink(path):
+        return f"cannot read the file: it is a symbolic link to {os.readlink(path)}, which does not exist"
     return f"cannot read the file: {error.strerror or error}"
 
 

@@ -55,8 +55,19 @@ class Found:
 
 
 def missing(paths: Iterable[str | Path]) -> list[str]:
-    """The paths that do not exist at all (a dangling symbolic link exists: it is reported when read)."""
-    return [str(path) for path in paths if not os.path.lexists(path)]
+    """The paths that do not exist at all (a dangling symbolic link exists, and so does a path that cannot
+    be looked at: both are reported when read)."""
+    return [str(path) for path in paths if not _exists(path)]
+
+
+def _exists(path: str | Path) -> bool:
+    try:
+        os.lstat(path)
+    except (FileNotFoundError, NotADirectoryError):
+        return False
+    except OSError:
+        return True
+    return True
 
 
 def discover(paths: Iterable[str | Path], resolver: Resolver | None = None, *,
@@ -64,11 +75,10 @@ def discover(paths: Iterable[str | Path], resolver: Resolver | None = None, *,
     """The files below ``paths`` by the rule of this module's docstring."""
     found = Found()
     seen: set[str] = set()
-    visited: set[tuple[int, int]] = set()
     for path in map(Path, paths):
-        if path.is_dir():
+        if _is_named_directory(path):
             unsearchable = len(found.unsearchable)
-            below = _search(path, resolver, visited, found.unsearchable)
+            below = _search(path, resolver, found.unsearchable)
             if not below and not found.unsearchable[unsearchable:]:
                 found.empty.append(str(path))
         elif force_exclude and _named_file_excluded(path, resolver):
@@ -84,10 +94,17 @@ def discover(paths: Iterable[str | Path], resolver: Resolver | None = None, *,
     return found
 
 
-def _search(directory: Path, resolver: Resolver | None, visited: set[tuple[int, int]],
-            unsearchable: list[tuple[str, str]]) -> list[str]:
+def _is_named_directory(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except OSError:  # below a directory that cannot be searched: taken as a file, reported when read
+        return False
+
+
+def _search(directory: Path, resolver: Resolver | None, unsearchable: list[tuple[str, str]]) -> list[str]:
     """The EDS files below ``directory``, sorted, following links to directories once each."""
     files: list[str] = []
+    visited: set[tuple[int, int]] = set()
     pending = [directory]
     while pending:
         current = pending.pop()

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from typing import Any, TypeVar
 
 from edsconv.signals import in_worker, worker_signals
@@ -70,14 +70,21 @@ def _in_workers(function: Callable[..., Result], tasks: Sequence[tuple], jobs: i
     return results
 
 
-def _completed(futures: Iterable) -> Iterator:
-    """The futures as they complete, waking every :data:`POLL_SECONDS` so that a signal handler runs."""
-    from concurrent.futures import FIRST_COMPLETED, wait
+def _completed(futures: Collection) -> Iterator:
+    """The futures as they complete, waking every :data:`POLL_SECONDS` so that a signal handler runs
+    (``as_completed`` waits without a timeout; ``wait`` in a loop costs the number of futures each time)."""
+    import queue
 
-    pending = set(futures)
-    while pending:
-        finished, pending = wait(pending, timeout=POLL_SECONDS, return_when=FIRST_COMPLETED)
-        yield from finished
+    finished: queue.SimpleQueue = queue.SimpleQueue()
+    for future in futures:
+        future.add_done_callback(finished.put)
+    for _ in range(len(futures)):
+        while True:
+            try:
+                yield finished.get(timeout=POLL_SECONDS)
+                break
+            except queue.Empty:
+                continue
 
 
 def _end_workers(pool: Any) -> None:

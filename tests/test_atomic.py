@@ -16,7 +16,7 @@ from conftest import REPO
 from edsconv import atomic
 from edsconv.atomic import write_all_atomically, write_atomically
 from edsconv.cli import cli
-from edsconv.cli.common import Interrupted
+from edsconv.signals import Interrupted
 
 EXAMPLE = REPO / "corpus" / "examples" / "io_adapter.eds"
 MESSY = "[Device]\nVendCode = 1;\n[File]\nDescText = \"x\";\n"
@@ -34,10 +34,10 @@ def umask_027():
 
 
 def test_a_new_file_gets_the_mode_the_umask_gives(tmp_path: Path, umask_027: None) -> None:
-    write_atomically(tmp_path / "a.xml", b"x")
+    write_atomically(tmp_path / "a.xml", b"x", inputs=())
     assert mode(tmp_path / "a.xml") == 0o640
     os.umask(0o022)
-    write_atomically(tmp_path / "b.xml", b"x")
+    write_atomically(tmp_path / "b.xml", b"x", inputs=())
     assert mode(tmp_path / "b.xml") == 0o644
 
 
@@ -45,7 +45,7 @@ def test_a_replaced_file_keeps_its_mode(tmp_path: Path, umask_027: None) -> None
     target = tmp_path / "a.xml"
     target.write_bytes(b"old")
     os.chmod(target, 0o664)
-    write_atomically(target, b"new", force=True)
+    write_atomically(target, b"new", inputs=(), force=True)
     assert (target.read_bytes(), mode(target)) == (b"new", 0o664)
 
 
@@ -53,7 +53,7 @@ def test_a_replaced_file_keeps_its_mode(tmp_path: Path, umask_027: None) -> None
     ["eds2xml", str(EXAMPLE), "-o", "{dir}", "--force"],
     ["xml2eds", str(REPO / "corpus" / "xml" / "cip-device" / "valid-complete.xml"), "-o", "{dir}/out.eds", "--force"],
     ["merge", str(REPO / "corpus" / "modular" / "adapter.eds"), str(REPO / "corpus" / "modular" / "module.eds"),
-     "-o", "{dir}/out.eds"],
+     "-o", "{dir}/out.eds", "--force"],
 ])
 def test_every_writer_gives_the_umask_mode_and_keeps_a_replaced_mode(tmp_path: Path, umask_027: None,
                                                                     command: list[str]) -> None:
@@ -89,7 +89,7 @@ def test_nothing_is_written_when_one_file_of_the_set_fails(tmp_path: Path, monke
 
     monkeypatch.setattr(atomic.os, "fsync", failing_fsync)
     with pytest.raises(OSError) as raised:
-        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")])
+        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")], inputs=())
     assert raised.value.filename == str(tmp_path / "b.xml")  # the file asked for, not the temporary one
     assert list(tmp_path.iterdir()) == []
 
@@ -115,7 +115,7 @@ def test_a_signal_while_writing_leaves_nothing(tmp_path: Path, monkeypatch: pyte
 
     monkeypatch.setattr(atomic.os, "fsync", fsync_then_signal)
     with pytest.raises(Interrupted):
-        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")])
+        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")], inputs=())
     assert list(tmp_path.iterdir()) == []
 
 
@@ -131,18 +131,18 @@ def test_a_signal_between_the_renames_waits_until_both_are_done(tmp_path: Path, 
 
     monkeypatch.setattr(atomic.os, "replace", replace_then_signal)
     with pytest.raises(Interrupted):
-        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")])
+        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")], inputs=())
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.xml", "b.xml"]
 
 
 def test_a_directory_or_a_file_in_the_way_is_an_error_before_anything_is_written(tmp_path: Path) -> None:
     (tmp_path / "b.xml").mkdir()
     with pytest.raises(IsADirectoryError):
-        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")])
+        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")], inputs=())
     assert [p.name for p in tmp_path.iterdir()] == ["b.xml"]
     (tmp_path / "file").write_text("")
     with pytest.raises(NotADirectoryError, match="is not a directory"):
-        write_atomically(tmp_path / "file" / "sub" / "x.eds", b"x")
+        write_atomically(tmp_path / "file" / "sub" / "x.eds", b"x", inputs=())
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
@@ -150,7 +150,7 @@ def test_a_device_is_written_to_not_replaced(tmp_path: Path) -> None:
     device = Path("/dev/full")
     kind = stat.S_IFMT(device.stat().st_mode)
     with pytest.raises(OSError, match="No space left on device") as raised:
-        write_atomically(device, b"x")  # no --force needed: a device is not a file to overwrite
+        write_atomically(device, b"x", inputs=())  # no --force needed: a device is not a file to overwrite
     assert raised.value.filename == "/dev/full"
     assert stat.S_ISCHR(kind) and stat.S_IFMT(device.stat().st_mode) == kind
     assert not list(Path("/dev").glob(".full.*.tmp"))
@@ -162,7 +162,7 @@ def test_a_named_pipe_is_written_to_not_replaced(tmp_path: Path) -> None:
     received: list[bytes] = []
     reader = threading.Thread(target=lambda: received.append(pipe.read_bytes()))
     reader.start()
-    write_atomically(pipe, b"profile")
+    write_atomically(pipe, b"profile", inputs=())
     reader.join(10)
     assert received == [b"profile"]
     assert stat.S_ISFIFO(pipe.stat().st_mode) and list(tmp_path.iterdir()) == [pipe]

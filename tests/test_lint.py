@@ -13,6 +13,7 @@ from click.testing import CliRunner
 
 from conftest import REPO, SHARED_REAL
 from edsconv import lint
+from edsconv import parallel as workers
 from edsconv.cli import cli
 from test_report import validate_sarif
 
@@ -134,7 +135,7 @@ def test_select_and_ignore_take_codes_and_prefixes(tree: Path, options: list[str
 
 
 def test_parallel_results_equal_sequential_in_input_order(tmp_path: Path):
-    for index in range(3 * lint.PARALLEL_THRESHOLD):
+    for index in range(3 * workers.PARALLEL_THRESHOLD):
         content = (GOOD, BROKEN, CANOPEN, WARNS)[index % 4] * (1 + index % 3)
         (tmp_path / f"f{index:02}.eds").write_bytes(content)
     sequential = lint.lint_paths([tmp_path], jobs=1)
@@ -197,12 +198,12 @@ _REAL_LINT_FILE = lint.lint_file
 
 
 def test_a_worker_that_dies_does_not_stop_the_run(tmp_path: Path, monkeypatch):
-    for index in range(2 * lint.PARALLEL_THRESHOLD):
+    for index in range(2 * workers.PARALLEL_THRESHOLD):
         (tmp_path / f"f{index:02}.eds").write_bytes(GOOD)
     (tmp_path / "broken.eds").write_bytes(BROKEN)
     monkeypatch.setattr(lint, "lint_file", _die_on_broken)
     reports = lint.lint_paths([tmp_path], jobs=2)
-    assert len(reports) == 2 * lint.PARALLEL_THRESHOLD + 1
+    assert len(reports) == 2 * workers.PARALLEL_THRESHOLD + 1
     assert reports[0].path.endswith("broken.eds")
     assert reports[0].error and "died" in reports[0].error
     assert all(not r.diagnostics or r.diagnostics[0].code == "EDS000" for r in reports)
@@ -253,12 +254,12 @@ def test_the_pre_commit_hook_pattern_takes_eds_in_any_letter_case():
 
 
 def test_no_progress_bar_when_piped(tmp_path: Path):
-    for index in range(lint.PROGRESS_THRESHOLD + 1):
+    for index in range(workers.PROGRESS_THRESHOLD + 1):
         (tmp_path / f"f{index:02}.eds").write_bytes(GOOD)
     result = edsconv("lint", str(tmp_path))
     assert result.returncode == 0
     assert result.stdout == ""
-    assert result.stderr.splitlines()[0] == f"{lint.PROGRESS_THRESHOLD + 1} files: 0 errors, 0 warnings, 0 notes"
+    assert result.stderr.splitlines()[0] == f"{workers.PROGRESS_THRESHOLD + 1} files: 0 errors, 0 warnings, 0 notes"
     assert result.stderr.splitlines()[-1].startswith("checked in ")
 
 

@@ -290,7 +290,9 @@ def test_cli_needs_a_module():
 def test_cli_output_file(tmp_path):
     target = tmp_path / "merged.eds"
     target.write_text("old")
-    result = run("merge", str(ADAPTER), str(MODULE), "-o", str(target))
+    refused = run("merge", str(ADAPTER), str(MODULE), "-o", str(target))  # issue 18 item 5: not without --force
+    assert (refused.exit_code, target.read_text()) == (2, "old")
+    result = run("merge", str(ADAPTER), str(MODULE), "-o", str(target), "--force")
     assert result.exit_code == 0 and result.stdout == ""
     assert target.read_text() == merge(load(ADAPTER), [load(MODULE)]).text()
     assert [p.name for p in tmp_path.iterdir()] == ["merged.eds"]  # no temporary file left

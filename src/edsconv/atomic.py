@@ -1,8 +1,11 @@
 """Output files written whole or not at all, with the modes a user expects.
 
-Every file edsconv writes (``eds2xml``'s two profiles, ``xml2eds -o``, ``fmt``,
-``merge -o``) goes through :func:`write_all_atomically`:
+This module is the one rule for writing files. Every file edsconv writes (``eds2xml``'s two
+profiles, ``xml2eds -o``, ``merge -o``, ``show --icon``) goes through :func:`write_all_atomically`,
+and the files ``fmt`` and ``lint --fix`` rewrite go through :func:`rewrite_in_place`:
 
+- an output file is never one of the command's inputs (under any name, ``--force`` or not), and an
+  existing file is replaced only with ``--force`` (:class:`Refused`, before anything is written);
 - each file is first written completely, and flushed to disk, as a temporary
   ``.NAME.XXXX.tmp`` beside its target; only when every temporary file is
   complete are they renamed over their targets, one after another, with SIGINT,
@@ -12,7 +15,10 @@ Every file edsconv writes (``eds2xml``'s two profiles, ``xml2eds -o``, ``fmt``,
 - a new file gets the mode the umask gives (``0o666 & ~umask``), a replaced file
   keeps its mode (and, where the user may set them, its owner and group);
 - a symbolic link is written through: its target is replaced, the link stays;
-- a device or a named pipe (``-o /dev/stdout``) is written to, never replaced.
+- a device or a named pipe (``-o /dev/stdout``) is written to, never replaced;
+- a file with other hard links is replaced like any other: the new file has one link, the
+  other names keep the old text (docs/lint.md, docs/fmt.md: a file is never half-written, which
+  writing in place could not promise).
 
 What a SIGKILL (or a power loss) can still leave is said in docs/mapping.md
 ("Output files"): stray temporary files, and, between the renames of a pair,
@@ -23,34 +29,39 @@ from __future__ import annotations
 
 import errno
 import os
-import signal
 import tempfile
-import threading
-from collections.abc import Iterator, Sequence
+from collections.abc import Collection, Iterator, Sequence
 from contextlib import contextmanager, suppress
 from pathlib import Path
 
-#: The signals held back while a set of files is renamed into place.
-HELD_SIGNALS = tuple(getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name))
+from edsconv.signals import signals_held
 
 
-def write_atomically(path: Path, data: bytes, *, force: bool = False) -> None:
-    """Write one file through a temporary file (see :func:`write_all_atomically`)."""
-    write_all_atomically([(path, data)], force=force)
+class Refused(Exception):
+    """A write the rule forbids: an existing file without ``--force``, or one of the command's inputs."""
 
 
-def write_all_atomically(files: Sequence[tuple[Path, bytes]], *, force: bool = False) -> None:
-    """Write every ``(path, data)`` or none of them.
+def rewrite_in_place(path: Path, data: bytes) -> None:
+    """Replace the file a command was asked to rewrite (``fmt``, ``lint --fix``): the one writer whose
+    output is its input."""
+    write_all_atomically([(path, data)], inputs=(), force=True)
 
-    Raises FileExistsError (without an errno) when a file exists and ``force`` is
-    false, and the OSError of the first step that fails, naming its file.
+
+def write_atomically(path: Path, data: bytes, *, inputs: Collection[Path], force: bool = False) -> None:
+    """Write one output file (see :func:`write_all_atomically`)."""
+    write_all_atomically([(path, data)], inputs=inputs, force=force)
+
+
+def write_all_atomically(files: Sequence[tuple[Path, bytes]], *, inputs: Collection[Path],
+                         force: bool = False) -> None:
+    """Write every ``(path, data)`` or none of them; ``inputs``: the files the command reads.
+
+    Raises :class:`Refused` (before anything is written) when a file is one of ``inputs``, whatever
+    ``force`` says, or exists and ``force`` is false; else the OSError of the first step that
+    fails, naming its file.
     """
+    _refusal(files, inputs, force)
     targets = [_written_path(path) for path, _ in files]
-    existing = [str(path) for path, _ in files if path.is_file()]
-    if existing and not force:
-        one = len(existing) == 1
-        raise FileExistsError(f"{', '.join(existing)} exist{'s' if one else ''} "
-                              f"(use --force to overwrite {'it' if one else 'them'})")
     # a device or a pipe (-o /dev/stdout) is written to, never replaced by a file
     special = [(path, target, data) for target, (path, data) in zip(targets, files, strict=True)
                if target.exists() and not target.is_file()]
@@ -72,6 +83,30 @@ def write_all_atomically(files: Sequence[tuple[Path, bytes]], *, force: bool = F
     for path, target, data in special:
         with _naming(path), open(target, "wb") as stream:
             stream.write(data)
+
+
+def _refusal(files: Sequence[tuple[Path, bytes]], inputs: Collection[Path], force: bool) -> None:
+    """The rule every writer follows: never over an input (a command must not destroy what it reads,
+    and with ``--force`` least of all), never over an existing file without ``--force``."""
+    overwritten = [path for path, _ in files if _same_file_as_any(path, inputs)]
+    if overwritten:
+        raise Refused(f"{overwritten[0]}: not written: it is an input of this command (name another output file)")
+    existing = [str(path) for path, _ in files if path.is_file()]
+    if existing and not force:
+        one = len(existing) == 1
+        raise Refused(f"{', '.join(existing)} exist{'s' if one else ''} "
+                      f"(use --force to overwrite {'it' if one else 'them'})")
+
+
+def _same_file_as_any(path: Path, inputs: Collection[Path]) -> bool:
+    """Whether ``path`` is one of ``inputs`` under any name (a link, a hard link, another spelling)."""
+    for candidate in inputs:
+        try:
+            if os.path.samefile(path, candidate):
+                return True
+        except OSError:  # one of them does not exist (yet): not the same file
+            continue
+    return False
 
 
 @contextmanager
@@ -131,20 +166,3 @@ def current_umask() -> int:
     mask = os.umask(0o022)
     os.umask(mask)
     return mask
-
-
-@contextmanager
-def signals_held() -> Iterator[None]:
-    """Hold :data:`HELD_SIGNALS` back inside the block; they are delivered when it ends.
-
-    Only the main thread can do so (and only on platforms with ``pthread_sigmask``);
-    elsewhere the block runs unprotected.
-    """
-    if not hasattr(signal, "pthread_sigmask") or threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    previous = signal.pthread_sigmask(signal.SIG_BLOCK, HELD_SIGNALS)
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)

@@ -166,7 +166,7 @@ class Resolver:
             found = self.overrides.config
         else:
             where = Path(os.path.abspath(path))
-            found = self.find(where if where.is_dir() else where.parent)
+            found = self.find(where if _is_directory(where) else where.parent)
         base = Settings() if found is None else self._load(found)
         return self.overrides.apply(base)
 
@@ -191,8 +191,18 @@ def settings_for(path: str | Path, overrides: Overrides = Overrides()) -> Settin
     return Resolver(overrides).settings_for(path)
 
 
+def _is_directory(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except OSError:  # below a directory that cannot be searched: the command reports the path itself
+        return False
+
+
 def _configures(path: Path) -> bool:
-    if not path.is_file():
+    try:
+        if not path.is_file():
+            return False
+    except OSError:  # a directory that cannot be searched holds no configuration edsconv can read
         return False
     if path.name != "pyproject.toml":
         return True

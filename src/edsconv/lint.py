@@ -5,8 +5,9 @@
 the suppressions its comments state (:mod:`edsconv.suppress`), on every core when
 there are enough of them, and returns one :class:`~edsconv.report.FileReport` per
 file in a stable order; ``--fix`` repairs what :mod:`edsconv.fix` can. A file that
-cannot be read, or on which edsconv itself fails, gives an ``EDS000``
-diagnostic: one broken file never stops the run.
+cannot be read (or a directory that cannot be searched), or on which edsconv itself
+fails, gives an ``EDS000`` diagnostic: one broken file never stops the run. Which files
+are checked is :mod:`edsconv.paths`'s rule; running them in workers, :mod:`edsconv.parallel`'s.
 
 Heavy imports (rich, concurrent.futures) happen inside the functions that need
 them.
@@ -17,7 +18,6 @@ from __future__ import annotations
 import difflib
 import enum
 import os
-import sys
 import traceback
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -27,6 +27,9 @@ from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, rul
 from edsconv.eds.reader import parse
 from edsconv.eds.syntax import EdsFile
 from edsconv.fix import fix_source, fixes_of, raw_text
+from edsconv.parallel import file_size, run_all
+from edsconv.paths import Found
+from edsconv.paths import discover as find
 from edsconv.report import FileReport
 from edsconv.suppress import apply_suppressions
 
@@ -35,9 +38,10 @@ INTERNAL_ERROR = rule(
     "edsconv could not check this file: it is unreadable, or edsconv failed on it (please report that)",
     explanation="""
         edsconv could not check this file: the file could not be read (permissions, a
-        directory named like a file, a file removed during the run) or edsconv failed on
-        it. The message says which. An internal failure is a bug in edsconv: please
-        report it with the file. The rest of the run goes on; the other files are
+        dangling symbolic link, a file removed during the run), a directory below a
+        searched one could not be searched (its files were never seen), or edsconv
+        failed on it. The message says which. An internal failure is a bug in edsconv:
+        please report it with the file. The rest of the run goes on; the other files are
         reported as usual.
     """,
     bad="""
@@ -55,15 +59,6 @@ INTERNAL_ERROR = rule(
         ```
     """,
 )
-
-#: The suffix of the files a directory is searched for, in any letter case (files named explicitly are
-#: linted whatever their suffix).
-EDS_SUFFIX = ".eds"
-#: Below this many files the work stays in this process: starting workers costs more than it saves.
-PARALLEL_THRESHOLD = 8
-#: From this many files on, a progress bar is shown (on a terminal only).
-PROGRESS_THRESHOLD = 20
-
 
 #: Every rule reported, nothing dropped: a file without configuration.
 EVERY_RULE = FileRules()
@@ -127,17 +122,18 @@ def _fixed(path: str, data: bytes, rules: FileRules, fix: FixMode) -> FileReport
         report.diff = "".join(difflib.unified_diff(old.splitlines(keepends=True), new.splitlines(keepends=True),
                                                    path, f"{path} (fixed)"))
         return report
-    from edsconv.atomic import write_atomically
+    from edsconv.atomic import rewrite_in_place
 
-    # a symbolic link stays a link (its target is fixed), and the file keeps its mode: edsconv.atomic
-    write_atomically(Path(path), outcome.data, force=True)
+    try:  # a symbolic link stays a link (its target is fixed), and the file keeps its mode: edsconv.atomic
+        rewrite_in_place(Path(path), outcome.data)
+    except OSError as error:  # the file is as it was: its findings are those of its text, nothing fixed
+        return FileReport(path, check(parse(data, path), rules), write_error=error.strerror or str(error))
     return report
 
 
 def _unreadable(path: str, error: OSError) -> str:
-    where = Path(path)
-    if where.is_symlink() and not where.exists():
-        return f"cannot read the file: it is a symbolic link to {os.readlink(where)}, which does not exist"
+    if isinstance(error, FileNotFoundError) and os.path.islink(path):
+        return f"cannot read the file: it is a symbolic link to {os.readlink(path)}, which does not exist"
     return f"cannot read the file: {error.strerror or error}"
 
 
@@ -147,87 +143,35 @@ def _failed(path: str, message: str, selection: Selection = EVERYTHING) -> FileR
 
 
 # --- many files -------------------------------------------------------------------------
-def discover(paths: Iterable[str | Path], resolver: Resolver | None = None) -> list[str]:
-    """Files as given, and directories searched recursively for ``*.eds`` in any letter case, sorted.
-
-    A dangling symbolic link found in a directory is kept (and reported when linted), never
-    skipped in silence; a file a configuration's ``exclude`` matches is left out of directory
-    searches (a file named explicitly is always linted). A file reached twice is linted once,
-    where it first appears.
-    """
-    found: dict[str, None] = {}
-    for path in map(Path, paths):
-        if path.is_dir():
-            below = sorted(str(p) for p in path.rglob("*") if _is_eds(p))
-            if resolver is not None:
-                below = [p for p in below if not resolver.settings_for(p).excludes(p)]
-            found.update(dict.fromkeys(below))
-        else:
-            found[str(path)] = None
-    return list(found)
-
-
-def _is_eds(path: Path) -> bool:
-    return path.suffix.lower() == EDS_SUFFIX and (path.is_file() or (path.is_symlink() and not path.exists()))
+def discover(paths: Iterable[str | Path], resolver: Resolver | None = None, *,
+             force_exclude: bool = False) -> list[str]:
+    """The files ``lint`` checks below ``paths``, by the one rule of :mod:`edsconv.paths`."""
+    return find(paths, resolver, force_exclude=force_exclude).files
 
 
 def lint_paths(paths: Iterable[str | Path], select: Sequence[str] = (), ignore: Sequence[str] = (),
                jobs: int | None = None, *, overrides: Overrides | None = None,
-               fix: FixMode = FixMode.REPORT) -> list[FileReport]:
-    """Lint every file :func:`discover` finds, each by the configuration found for it (:mod:`edsconv.config`)
-    with ``overrides`` (or ``select``/``ignore``) on top; reports in discovery order.
+               fix: FixMode = FixMode.REPORT, found: Found | None = None) -> list[FileReport]:
+    """Lint every file :mod:`edsconv.paths` finds (or those of ``found``), each by the configuration found
+    for it (:mod:`edsconv.config`) with ``overrides`` (or ``select``/``ignore``) on top; reports in
+    discovery order, then one EDS000 report for each directory that could not be searched.
 
     A check none of whose rules is selected does not run. :class:`~edsconv.config.ConfigError`
     when a configuration file is bad.
     """
     resolver = Resolver(overrides or Overrides(tuple(select), tuple(ignore)))
-    files = discover(paths, resolver)
-    tasks = [(f, resolver.settings_for(f).for_file(f)) for f in files]
-    jobs = jobs or os.cpu_count() or 1
-    if jobs > 1 and len(files) > PARALLEL_THRESHOLD:
-        return _lint_parallel(tasks, jobs, fix)
-    return [lint_file(f, rules, fix) for f, rules in _progress(tasks, len(tasks))]
+    found = found or find(paths, resolver)
+    tasks = [(f, resolver.settings_for(f).for_file(f), fix) for f in found.files]
+    reports = run_all(lint_file, tasks, jobs or os.cpu_count() or 1, "linting", died=_died,
+                      sizes=[file_size(f) for f in found.files])
+    return reports + [_failed(directory, f"cannot search the directory: {reason}",
+                              resolver.settings_for(directory).for_file(directory).selection)
+                      for directory, reason in found.unsearchable]
 
 
-def _lint_parallel(tasks: list[tuple[str, FileRules]], jobs: int, fix: FixMode) -> list[FileReport]:
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-    from concurrent.futures.process import BrokenProcessPool
-
-    reports: list[FileReport | None] = [None] * len(tasks)
-    # Largest first, one file a task: sizes differ a hundredfold, and the last big file must not start alone.
-    order = sorted(range(len(tasks)), key=lambda i: -_size(tasks[i][0]))
-    try:
-        with ProcessPoolExecutor(max_workers=min(jobs, len(tasks))) as pool:
-            futures = {pool.submit(lint_file, *tasks[i], fix): i for i in order}
-            for future in _progress(as_completed(futures), len(tasks)):
-                reports[futures[future]] = future.result()
-    except BrokenProcessPool as error:
-        # A worker died (killed, out of memory): every file not answered for is reported, the rest kept.
-        message = f"the worker process checking this file died ({error}); please report it"
-        reports = [r or _failed(f, message, rules.selection) for (f, rules), r in zip(tasks, reports, strict=True)]
-    return [r for r in reports if r is not None]  # every file has its report by now
-
-
-def _size(path: str) -> int:
-    try:
-        return os.stat(path).st_size
-    except OSError:
-        return 0
-
-
-def _progress(items: Iterable, total: int) -> Iterable:
-    """``items``, with a progress bar on stderr when it is a terminal and there are many."""
-    if total < PROGRESS_THRESHOLD or not sys.stderr.isatty():
-        yield from items
-        return
-    from rich.console import Console
-    from rich.progress import Progress
-
-    with Progress(console=Console(stderr=True), transient=True) as progress:
-        task = progress.add_task("linting", total=total)
-        for item in items:
-            yield item
-            progress.advance(task)
+def _died(task: tuple, message: str) -> FileReport:
+    path, rules, _ = task
+    return _failed(path, message, rules.selection)
 
 
 def at_least(reports: Iterable[FileReport], severity: Severity, named: Iterable[str] = ()) -> None:

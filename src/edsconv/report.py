@@ -86,6 +86,8 @@ class FileReport:
     fixes: dict[tuple[str, int, int, str], Fix] = field(default_factory=dict)
     #: notes found but not shown (notes are shown on request: ``--show-notes``)
     hidden_notes: int = 0
+    #: ``--fix``: why the repaired file could not be written (the file is unchanged; exit 2)
+    write_error: str | None = None
 
     def as_dict(self) -> dict:
         return {"path": printable(self.path), "diagnostics": [self._entry(d) for d in self.diagnostics],

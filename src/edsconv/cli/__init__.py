@@ -11,7 +11,7 @@ and counts the problems on stderr; ``edsconv lint`` is the command that judges).
 Nothing leaves as a traceback: an OSError no command expected is one line naming the file, any
 other exception one line asking for a report (``--debug`` or ``EDSCONV_DEBUG=1`` adds the
 traceback), both exit 2. SIGINT, SIGTERM and SIGHUP end the command with 128 + the signal's
-number (130, 143, 129) after the files being written are cleaned up (:mod:`edsconv.atomic`).
+number (130, 143, 129) after the files being written are cleaned up (:mod:`edsconv.signals`).
 """
 
 from __future__ import annotations
@@ -21,13 +21,19 @@ import os
 import signal
 import sys
 import traceback
-from collections.abc import Iterator
-from contextlib import contextmanager
 from typing import Any
 
 import click
 
-from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE, CannotRun, Interrupted
+from edsconv.cli.common import (
+    EXIT_CLEAN,
+    EXIT_FINDINGS,
+    EXIT_USAGE,
+    CannotRun,
+    ClosedOutput,
+    cannot_write_standard_output,
+)
+from edsconv.signals import Interrupted, signals_interrupt
 
 #: Set (to anything but empty or 0) to print the traceback of an unexpected error, as ``--debug`` does.
 DEBUG_VARIABLE = "EDSCONV_DEBUG"
@@ -73,7 +79,7 @@ class LazyGroup(click.Group):
             raise
         except BrokenPipeError as error:  # the reader of standard output left: stop writing to it
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-            raise CannotRun(f"<stdout>: cannot write: {error.strerror}") from error
+            raise CannotRun(cannot_write_standard_output(error.strerror or "Broken pipe")) from error
         except OSError as error:  # reads and writes go through reading() / writing(); this is one they missed
             _print_traceback_if(ctx.params.get("debug", False))
             raise CannotRun(f"{error.filename if error.filename is not None else 'edsconv'}: "
@@ -106,6 +112,8 @@ def _exit_with(ctx: click.Context, code: int | None, **options: object) -> None:
 
 def main() -> None:
     """Entry point: exit codes as in the module docstring; usage errors and :class:`CannotRun` are 2."""
+    if sys.stdout is None:  # started with standard output closed (>&-): a write says so, whatever the command
+        sys.stdout = ClosedOutput()
     try:
         with signals_interrupt():
             # Without standalone mode click returns the code of ctx.exit() ...
@@ -119,22 +127,6 @@ def main() -> None:
         click.echo(f"edsconv: interrupted by {signal.Signals(interruption.signal_number).name}", err=True)
         sys.exit(128 + interruption.signal_number)
     sys.exit(code if isinstance(code, int) else EXIT_CLEAN)
-
-
-@contextmanager
-def signals_interrupt() -> Iterator[None]:
-    """SIGINT, SIGTERM and SIGHUP raise :class:`Interrupted` inside, so that ``finally`` blocks clean up."""
-    from edsconv.atomic import HELD_SIGNALS
-
-    def interrupt(signal_number: int, frame: object) -> None:
-        raise Interrupted(signal_number)
-
-    previous = {number: signal.signal(number, interrupt) for number in HELD_SIGNALS}
-    try:
-        yield
-    finally:
-        for number, handler in previous.items():
-            signal.signal(number, handler)
 
 
 __all__ = ["EXIT_CLEAN", "EXIT_FINDINGS", "EXIT_USAGE", "cli", "main"]

@@ -11,9 +11,11 @@ This module is loaded by every command, ``parse`` included: keep its imports lig
 
 from __future__ import annotations
 
+import io
+import os
 from collections import Counter
 from collections.abc import Iterable, Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
@@ -23,6 +25,7 @@ from edsconv.diagnostics import Diagnostic, Severity, has_errors
 
 if TYPE_CHECKING:
     from edsconv.eds.syntax import EdsFile
+    from edsconv.paths import Found
 
 #: ran and found no errors (warnings may have been printed)
 EXIT_CLEAN = 0
@@ -42,13 +45,26 @@ class CannotRun(click.ClickException):
         click.echo(self.message, err=True)
 
 
-class Interrupted(BaseException):
-    """A signal (SIGINT, SIGTERM, SIGHUP) ends the command: a BaseException, so that no handler of
-    ``Exception`` stops it and every ``finally`` block runs."""
+def cannot_write_standard_output(reason: str) -> str:
+    """The one line every command prints when its standard output is closed or its reader has gone."""
+    return f"edsconv: cannot write to standard output: {reason}"
 
-    def __init__(self, signal_number: int) -> None:
-        super().__init__(signal_number)
-        self.signal_number = signal_number
+
+class ClosedOutput(io.TextIOBase):
+    """Standard output when the command was started without one (``>&-``): writing to it cannot run."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        with suppress(OSError):  # keep descriptor 1 taken, so that no file the command opens becomes it
+            os.fstat(1)
+            return
+        os.open(os.devnull, os.O_WRONLY)
+
+    def writable(self) -> bool:
+        return True
+
+    def write(self, text: str) -> int:
+        raise CannotRun(cannot_write_standard_output("it is closed"))
 
 
 @contextmanager
@@ -64,14 +80,54 @@ def reading(path: object | None = None) -> Iterator[None]:
 @contextmanager
 def writing(path: object | None = None) -> Iterator[None]:
     """``path: cannot write: reason`` for an OSError inside (the file the error names, else ``path``);
-    a refusal to overwrite says itself why."""
+    a refusal of :mod:`edsconv.atomic`'s rule (an existing file without --force, an input) says itself why."""
+    from edsconv.atomic import Refused
+
     try:
         yield
+    except Refused as refused:
+        raise CannotRun(str(refused)) from refused
     except OSError as error:
-        if isinstance(error, FileExistsError) and error.errno is None:  # write_atomically without force
-            raise CannotRun(str(error)) from error
-        named = error.filename if error.filename is not None else path
-        raise CannotRun(f"{named}: cannot write: {error.strerror or error}") from error
+        raise CannotRun(cannot_write(error.filename if error.filename is not None else path,
+                                     error.strerror or str(error))) from error
+
+
+def cannot_write(path: object, reason: str) -> str:
+    """The one line every command prints for a file it cannot write."""
+    return f"{path}: cannot write: {reason}"
+
+
+@contextmanager
+def configuration() -> Iterator[None]:
+    """A bad configuration file cannot run: ``path:line: reason``, exit 2."""
+    from edsconv.config import ConfigError
+
+    try:
+        yield
+    except ConfigError as error:
+        raise CannotRun(str(error)) from error
+
+
+def existing_paths(ctx: click.Context, param: click.Parameter, value: tuple[Path, ...]) -> tuple[Path, ...]:
+    """Argument callback: paths that exist (a dangling link or an unreadable file exists: the command
+    reports it and goes on; a path that is not there at all is a typo, exit 2)."""
+    from edsconv.paths import missing
+
+    gone = missing(value)
+    if gone:
+        raise click.BadParameter(f"Path {gone[0]!r} does not exist.")
+    return value
+
+
+def files_to_work_on(found: Found, paths: Iterable[Path]) -> Found:
+    """What :func:`edsconv.paths.discover` found, after the rule's messages: a warning for each named
+    directory without an EDS file; :class:`CannotRun` when nothing at all was found (files that
+    ``--force-exclude`` left out are not nothing: pre-commit names only excluded files in some commits)."""
+    if not (found.files or found.unsearchable or found.excluded):  # a CI job pointed at the wrong folder fails
+        raise CannotRun(f"no EDS file (*.eds) found in {', '.join(str(p) for p in paths)}; nothing checked")
+    for directory in found.empty:
+        click.echo(f"edsconv: warning: no EDS file (*.eds) found in {directory}", err=True)
+    return found
 
 
 def read_eds(path: Path) -> EdsFile:

@@ -90,7 +90,7 @@ def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: 
     except NotConverted as refused:
         echo_diagnostics(refused.diagnostics, err=True)
         return EXIT_FINDINGS
-    for target in _write_all(output_dir, outputs, force):
+    for target in _write_all(output_dir, outputs, force, eds_file):
         click.echo(str(target))
     return exit_status(diagnostics)
 
@@ -105,12 +105,12 @@ def _documents(eds_file: Path, device: Device, header: Header, wrapper_reference
         raise CannotRun(f"{eds_file}: internal error, nothing written: {error}") from error
 
 
-def _write_all(output_dir: Path, outputs: list[Output], force: bool) -> list[Path]:
+def _write_all(output_dir: Path, outputs: list[Output], force: bool, eds_file: Path) -> list[Path]:
     """Write every document or none (none when one exists and ``force`` is not given)."""
     targets = [output_dir / output.name for output in outputs]
     with writing(output_dir):  # an error names the file it is about
         write_all_atomically([(target, output.data) for target, output in zip(targets, outputs, strict=True)],
-                             force=force)
+                             inputs=[eds_file], force=force)
     return targets
 
 
@@ -137,6 +137,6 @@ def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool
         sys.stdout.write(text)
     else:
         with writing(output):
-            write_atomically(output, text.encode("utf-8"), force=force)
+            write_atomically(output, text.encode("utf-8"), inputs=profiles, force=force)
         click.echo(str(output))
     return exit_status(diagnostics)

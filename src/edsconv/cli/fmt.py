@@ -3,70 +3,125 @@
 from __future__ import annotations
 
 import difflib
+import os
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import click
 
-from edsconv.atomic import write_atomically
-from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE, CannotRun, documentation, reading, writing
+from edsconv.atomic import rewrite_in_place
+from edsconv.cli.common import (
+    EXIT_CLEAN,
+    EXIT_FINDINGS,
+    EXIT_USAGE,
+    CannotRun,
+    configuration,
+    documentation,
+    files_to_work_on,
+    reading,
+    writing,
+)
+from edsconv.config import Resolver
 from edsconv.eds.canonical import format_bytes
 from edsconv.eds.reader import load
 from edsconv.eds.syntax import EdsFile
+from edsconv.parallel import file_size, run_all
+from edsconv.paths import discover
 
 #: what became of one file
 CHANGED, UNCHANGED, NOT_FORMATTED = "changed", "unchanged", "not formatted"
 
 
+@dataclass(slots=True)
+class Formatted:
+    """What became of one file, its exit code and what to print (a worker returns it; the command prints)."""
+
+    outcome: str
+    code: int
+    #: lines for standard error
+    messages: list[str] = field(default_factory=list)
+    #: ``--diff``: the unified diff, for standard output
+    diff: str = ""
+
+
 @click.command("fmt", epilog=documentation("fmt.md"))
-@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("paths", nargs=-1, required=True, type=click.Path(readable=False, path_type=Path))
 @click.option("--check", is_flag=True, help="Write nothing; exit 1 when a file is not in canonical form.")
 @click.option("--diff", "show_diff", is_flag=True, help="Write nothing; print a unified diff of each change.")
-def fmt_command(files: tuple[Path, ...], check: bool, show_diff: bool) -> int:
-    """Rewrite EDS files in canonical order and layout.
+@click.option("--force-exclude", is_flag=True,
+              help="Leave out files named on the command line that a directory search would leave out.")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), default=None,
+              help="Worker processes for many files [default: every core].")
+def fmt_command(paths: tuple[Path, ...], check: bool, show_diff: bool, force_exclude: bool, jobs: int | None) -> int:
+    """Rewrite EDS files, and directories recursively for *.eds files, in canonical order and layout.
 
     Values keep their spelling and comments stay with their fields. A file with
     syntax errors is not rewritten (its unparsed text cannot be laid out). Exit 0
     when every file is (or now is) canonical, 1 when --check / --diff found a file
     to change or a file has syntax errors, 2 when a file cannot be read or written.
     """
-    outcomes = []
-    for path in files:
-        try:
-            outcomes.append(format_file(path, write=not (check or show_diff), show_diff=show_diff))
-        except CannotRun as error:  # the other files are still formatted
-            error.show()
-            outcomes.append((NOT_FORMATTED, EXIT_USAGE))
-    verb = "would be reformatted" if check or show_diff else "reformatted"
-    changed = sum(outcome == CHANGED for outcome, _ in outcomes)
-    unchanged = sum(outcome == UNCHANGED for outcome, _ in outcomes)
-    failed = len(outcomes) - changed - unchanged
+    with configuration():  # the configuration's exclude applies to directory searches, as for lint
+        found = files_to_work_on(discover(paths, Resolver(), force_exclude=force_exclude), paths)
+    write = not (check or show_diff)
+    results = run_all(format_file, [(Path(f), write, show_diff) for f in found.files], jobs or os.cpu_count() or 1,
+                      "formatting", died=_died, sizes=[file_size(f) for f in found.files])
+    results += [Formatted(NOT_FORMATTED, EXIT_USAGE, [f"{directory}: cannot read: {reason}"])
+                for directory, reason in found.unsearchable]
+    for result in results:
+        if result.diff:
+            click.echo(result.diff, nl=False)
+        for message in result.messages:
+            click.echo(message, err=True)
+    verb = "would be reformatted" if not write else "reformatted"
+    changed = sum(result.outcome == CHANGED for result in results)
+    unchanged = sum(result.outcome == UNCHANGED for result in results)
+    failed = len(results) - changed - unchanged
     click.echo(f"{changed} file(s) {verb}, {unchanged} unchanged" + (f", {failed} not formatted" if failed else ""),
                err=True)
-    return max((code for _, code in outcomes), default=EXIT_CLEAN)
+    return max((result.code for result in results), default=EXIT_CLEAN)
 
 
-def format_file(path: Path, write: bool, show_diff: bool) -> tuple[str, int]:
-    """Format one file (or, unless ``write``, say that it would change); what became of it and its exit code."""
+def format_file(path: Path, write: bool, show_diff: bool) -> Formatted:
+    """Format one file (or, unless ``write``, say that it would change); never raises for a problem of the file."""
+    try:
+        return _format(path, write, show_diff)
+    except CannotRun as error:  # the other files are still formatted
+        return Formatted(NOT_FORMATTED, EXIT_USAGE, [error.message])
+
+
+def _format(path: Path, write: bool, show_diff: bool) -> Formatted:
     with reading(path):
         original = path.read_bytes()
         eds = load(path)
     errors = [d for d in eds.diagnostics if d.severity.name == "ERROR"]
     if errors:
-        click.echo(f"{path}: not formatted: {len(errors)} syntax error(s) leave text that cannot be laid "
-                   f"out; first: {errors[0].format()}", err=True)
-        return NOT_FORMATTED, EXIT_FINDINGS
+        return Formatted(NOT_FORMATTED, EXIT_FINDINGS, [
+            f"{path}: not formatted: {len(errors)} syntax error(s) leave text that cannot be laid out; "
+            f"first: {errors[0].format()}{_fixable_hint(path, eds, original, errors)}"])
     data = format_bytes(eds)
     if data == original:
-        return UNCHANGED, EXIT_CLEAN
-    if show_diff:
-        click.echo(unified_diff(path, eds, original, data), nl=False)
+        return Formatted(UNCHANGED, EXIT_CLEAN)
+    diff = unified_diff(path, eds, original, data) if show_diff else ""
     if not write:
-        click.echo(f"would reformat {path}", err=True)
-        return CHANGED, EXIT_FINDINGS
+        return Formatted(CHANGED, EXIT_FINDINGS, [f"would reformat {path}"], diff)
     with writing(path):
-        write_atomically(path, data, force=True)
-    click.echo(f"reformatted {path}", err=True)
-    return CHANGED, EXIT_CLEAN
+        rewrite_in_place(path, data)
+    return Formatted(CHANGED, EXIT_CLEAN, [f"reformatted {path}"])
+
+
+def _fixable_hint(path: Path, eds: EdsFile, original: bytes, errors: list) -> str:
+    """Where some of the syntax errors have a safe fix: the command that makes it."""
+    from edsconv.fix import fix_for, raw_text, split_lines
+
+    lines = split_lines(raw_text(original, eds.encoding))
+    fixable = sum(fix_for(eds, lines, error) is not None for error in errors)
+    if not fixable:
+        return ""
+    return f"; 'edsconv lint --fix {path}' repairs {'it' if len(errors) == 1 else f'{fixable} of them'}"
+
+
+def _died(task: tuple, message: str) -> Formatted:
+    return Formatted(NOT_FORMATTED, EXIT_USAGE, [f"{task[0]}: not formatted: {message}"])
 
 
 def unified_diff(path: Path, eds: EdsFile, original: bytes, formatted: bytes) -> str:

@@ -5,16 +5,28 @@ from __future__ import annotations
 import json
 import sys
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
 from pathlib import Path
 
 import click
 
-from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, CannotRun, documentation, exit_status, rule_codes
-from edsconv.config import ConfigError, Overrides, Resolver
+from edsconv.cli.common import (
+    EXIT_CLEAN,
+    EXIT_FINDINGS,
+    EXIT_USAGE,
+    CannotRun,
+    cannot_write,
+    configuration,
+    documentation,
+    existing_paths,
+    exit_status,
+    files_to_work_on,
+    rule_codes,
+)
+from edsconv.config import Overrides, Resolver
 from edsconv.diagnostics import Severity
 from edsconv.lint import FixMode, at_least, lint_paths
+from edsconv.paths import discover
 from edsconv.report import FORMATTERS, FileReport, sarif_log
 from edsconv.report_text import TEXT_FORMATS, Style, colour_wanted, format_statistics, format_text, summary
 from edsconv.report_text import statistics as statistics_of
@@ -46,7 +58,8 @@ def output_options(command: Callable) -> Callable:
 
 
 @click.command("lint", epilog=documentation("lint.md"))
-@click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True, path_type=Path))
+@click.argument("paths", nargs=-1, required=True, type=click.Path(readable=False, path_type=Path),
+                callback=existing_paths)
 @output_options
 @click.option("--select", multiple=True, callback=rule_codes, metavar="CODES",
               help="Report only these codes or code prefixes (comma-separated, e.g. EDS0,EDS101); replaces the "
@@ -64,33 +77,37 @@ def output_options(command: Callable) -> Callable:
               "would change). Text only.")
 @click.option("--config", "config_file", type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="Use this configuration file for every path instead of searching for one.")
-@click.option("--isolated", is_flag=True, help="Read no configuration file.")
+@click.option("--isolated", is_flag=True, help="Read no configuration file (not with --config).")
+@click.option("--force-exclude", is_flag=True,
+              help="Leave out files named on the command line that a directory search would leave out (the "
+              "configuration's exclude, hidden directories); for pre-commit, which names every file.")
 @click.option("--show-settings", is_flag=True,
               help="Print the settings in force for each path and where they come from; check nothing.")
 @click.option("--jobs", "-j", type=click.IntRange(min=1), default=None,
               help="Worker processes for many files [default: every core].")
 def lint_command(paths: tuple[Path, ...], output_format: str, select: tuple[str, ...], ignore: tuple[str, ...],
                  warnings_as_errors: bool | None, min_severity: str | None, show_notes: bool, fix: FixMode | None,
-                 statistics: bool, colour: str, config_file: Path | None, isolated: bool, show_settings: bool,
-                 jobs: int | None) -> int:
+                 statistics: bool, colour: str, config_file: Path | None, isolated: bool, force_exclude: bool,
+                 show_settings: bool, jobs: int | None) -> int:
     """Check EDS files, and directories recursively for *.eds files (any letter case).
 
     Settings come from [tool.edsconv] in pyproject.toml or from edsconv.toml, found
     by walking up from each file; options override them. Exit status: 0 no errors,
     1 errors found (--diff: a file would change), 2 could not run (a bad option, a
-    bad configuration file, a path without any EDS file).
+    bad configuration file, a path without any EDS file, a fixed file that cannot be written).
     """
     started = time.monotonic()
     _refuse_diff_as(output_format, fix)
+    if config_file is not None and isolated:
+        raise click.UsageError("--isolated reads no configuration file: it cannot be used with --config")
     overrides = Overrides(select, ignore, warnings_as_errors, config_file, isolated)
     with configuration():
+        resolver = Resolver(overrides)
         if show_settings:
-            resolver = Resolver(overrides)
             click.echo("\n".join(resolver.settings_for(p).describe(p) for p in paths), nl=False)
             return EXIT_CLEAN
-        reports = lint_paths(paths, jobs=jobs, overrides=overrides, fix=fix or FixMode.REPORT)
-    if not reports:  # a CI job pointed at the wrong folder must not pass
-        raise CannotRun(f"no EDS file (*.eds) found in {', '.join(str(p) for p in paths)}; nothing checked")
+        found = files_to_work_on(discover(paths, resolver, force_exclude=force_exclude), paths)
+        reports = lint_paths(paths, jobs=jobs, overrides=overrides, fix=fix or FixMode.REPORT, found=found)
     at_least(reports, shown_from(min_severity, show_notes), named=select)
     if fix is FixMode.DIFF:
         return _print_diffs(reports)
@@ -104,7 +121,7 @@ def _print(reports: list[FileReport], output_format: str, statistics: bool, colo
     if output_format in ("text", *TEXT_FORMATS) and not statistics:
         style = Style(colour_wanted(colour, sys.stderr))
         click.echo(summary(reports, time.monotonic() - started, style), err=True, nl=False, color=style.colour)
-    return exit_status(d for r in reports for d in r.diagnostics)
+    return _unwritten(reports) or exit_status(d for r in reports for d in r.diagnostics)
 
 
 def _refuse_diff_as(output_format: str, fix: FixMode | None) -> None:
@@ -137,13 +154,12 @@ def _output(reports: list[FileReport], output_format: str, statistics: bool, col
     return FORMATTERS[output_format](reports)
 
 
-@contextmanager
-def configuration() -> Iterator[None]:
-    """A bad configuration file cannot run: ``path:line: reason``, exit 2."""
-    try:
-        yield
-    except ConfigError as error:
-        raise CannotRun(str(error)) from error
+def _unwritten(reports: list[FileReport]) -> int:
+    """``--fix``: a line for each fixed file that could not be written, after the findings; exit 2 if any."""
+    unwritten = [r for r in reports if r.write_error is not None]
+    for report in unwritten:
+        click.echo(cannot_write(report.path, str(report.write_error)), err=True)
+    return EXIT_USAGE if unwritten else EXIT_CLEAN
 
 
 def _print_diffs(reports: list[FileReport]) -> int:

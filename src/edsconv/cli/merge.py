@@ -16,7 +16,8 @@ from edsconv.merge import merge
 @click.argument("modules", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
 @click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
               help="Write the combined entries to FILE (atomically) instead of standard output.")
-def merge_command(adapter: Path, modules: tuple[Path, ...], output: Path | None) -> int:
+@click.option("--force", is_flag=True, help="Overwrite an existing output file (never one of the inputs).")
+def merge_command(adapter: Path, modules: tuple[Path, ...], output: Path | None, force: bool) -> int:
     """Merge an adapter EDS with module EDS files (C.4.1.5.3).
 
     Prints the combined Param / Enum / Assem / Connection entries as EDS text;
@@ -30,5 +31,5 @@ def merge_command(adapter: Path, modules: tuple[Path, ...], output: Path | None)
         click.echo(text, nl=False)
     else:
         with writing(output):
-            write_atomically(output, text.encode("utf-8"), force=True)
+            write_atomically(output, text.encode("utf-8"), inputs=[adapter, *modules], force=force)
     return exit_status(result.diagnostics)

@@ -51,7 +51,9 @@ def _section_names(ctx: click.Context, param: click.Parameter, value: tuple[str,
               help="text: tables for people; json: the same content for programs.")
 @click.option("--icon", "icon_file", type=click.Path(dir_okay=False, path_type=Path), metavar="FILE",
               help="Also write the icon IconContents holds (decoded from base64) to FILE.")
-def show_command(file: Path, sections: tuple[str, ...], output_format: str, icon_file: Path | None) -> int:
+@click.option("--force", is_flag=True, help="Overwrite an existing icon file (never the EDS itself).")
+def show_command(file: Path, sections: tuple[str, ...], output_format: str, icon_file: Path | None,
+                 force: bool) -> int:
     """Show what an EDS says about a device: identity, parameters, assemblies, connections, ports, modules.
 
     Exit 0 whenever the file could be read, even when it has errors: their count goes to
@@ -59,7 +61,7 @@ def show_command(file: Path, sections: tuple[str, ...], output_format: str, icon
     """
     device, diagnostics = analyse(read_eds(file))
     if icon_file is not None:
-        _write_icon(file, device.icon_contents.data if device.icon_contents else None, icon_file)
+        _write_icon(file, device.icon_contents.data if device.icon_contents else None, icon_file, force)
     with paused_gc():  # the document is many small objects and no cycles, as the model is
         document = select(describe(device), sections)
         if output_format == "json":
@@ -71,14 +73,14 @@ def show_command(file: Path, sections: tuple[str, ...], output_format: str, icon
     return EXIT_CLEAN
 
 
-def _write_icon(file: Path, data: bytes | None, target: Path) -> None:
+def _write_icon(file: Path, data: bytes | None, target: Path, force: bool) -> None:
     """The decoded IconContents to ``target``, whatever the bytes are (show says what they are)."""
     if data is None:
         raise CannotRun(f"{file}: no icon to write: IconContents is missing or not base64")
     from edsconv.atomic import write_atomically
 
     with writing(target):
-        write_atomically(target, data, force=True)
+        write_atomically(target, data, inputs=[file], force=force)
 
 
 def print_text(document: dict, sections: tuple[str, ...]) -> None:

@@ -41,7 +41,7 @@ def show_device(analysis: Analysis, render: ShowRenderer | None) -> dict:
 
 def convert_to_xml(analysis: Analysis, path: str | None, force: bool) -> list[str]:
     """Write STEM_device.xml and STEM_commnet.xml beside the EDS at ``path``; the paths written."""
-    from edsconv.atomic import write_all_atomically
+    from edsconv.atomic import Refused, write_all_atomically
     from edsconv.xml.common import InvalidProfile
     from edsconv.xml.convert import NotConverted, conversion_refusals, header_for, profile_documents
 
@@ -54,8 +54,9 @@ def convert_to_xml(analysis: Analysis, path: str | None, force: bool) -> list[st
     try:
         outputs = profile_documents(analysis.device, header_for(analysis.device, eds_path.stem, {}), eds_path.stem)
         targets = [eds_path.parent / output.name for output in outputs]
-        write_all_atomically([(t, o.data) for t, o in zip(targets, outputs, strict=True)], force=force)
-    except (NotConverted, InvalidProfile, OSError) as error:
+        write_all_atomically([(t, o.data) for t, o in zip(targets, outputs, strict=True)], inputs=[eds_path],
+                             force=force)
+    except (NotConverted, InvalidProfile, Refused, OSError) as error:
         raise CommandRefused(str(error)) from None
     return [str(target) for target in targets]
 

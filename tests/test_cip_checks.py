@@ -184,6 +184,14 @@ def test_opaque_assembly_is_data_of_its_size():
     assert not {"EDS326", "EDS327"} & set(codes("idioms/opaque_self_assembly.eds"))
 
 
+def test_opaque_assembly_of_another_size_is_a_size_disagreement_not_a_cycle():
+    """Issue 20 item 11: 4096 bits against 496 bytes is EDS324, and the idiom is still recognised."""
+    relative = "shall/C.4.1.4.8_opaque_assembly_size_agrees.eds"
+    found = device(relative)
+    assert found.assemblies["Assem150"].opaque and found.assembly_bits(found.assemblies["Assem150"]) == 496 * 8
+    assert [c for c in codes(relative) if c in {"EDS324", "EDS326", "EDS327", "EDS514"}] == ["EDS324", "EDS514"]
+
+
 def test_the_typed_view_attaches_to_a_device_read_from_xml():
     """The XML reader fills extra_entries / other_sections without syntax entries; attach reads them alike."""
     from edsconv.xml.common import Header

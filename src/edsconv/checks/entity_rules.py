@@ -449,8 +449,9 @@ ASSEMBLY_CYCLE = rule(
     explanation="""
         An assembly reaches itself through its assembly members (directly or through
         others), so it has no finite size; no tool can import it. EZ-EDS's opaque
-        assembly, whose one member names the assembly itself with its full size, is
-        read as data of that size instead (EDS514).
+        assembly, whose one member names the assembly itself with a Member Size, is
+        read as data of that size instead (EDS514; a Member Size that differs from the
+        assembly's Size is EDS324).
     """,
     bad=block("""
         Assem100 = "In","",4,,,,32,Assem101;

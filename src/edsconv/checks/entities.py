@@ -15,6 +15,7 @@ from typing import TypeGuard
 
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
+from edsconv.checks.coherence_rules import SCALING_ALL_ZERO
 from edsconv.checks.entity_rules import (
     ASSEMBLY_CYCLE,
     ASSEMBLY_NOT_WHOLE_BYTES,
@@ -425,7 +426,7 @@ def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
                              f"{' or '.join(given)}", _node(entry, 9 if "minimum" in given else 10))
 
 
-@check(SCALING_ON_NON_NUMERIC, SCALING_ZERO)
+@check(SCALING_ON_NON_NUMERIC, SCALING_ZERO, SCALING_ALL_ZERO)
 def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
     scaling_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports scaling")
     for parameter in ctx.device.parameters.values():
@@ -442,7 +443,12 @@ def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not _is_int(parameter.descriptor) or not scaling_bit.extract(parameter.descriptor):
             continue  # Figure C.8 writes 0s for scaling that is not used
-        if parameter.scaling.divisor == 0 and _is_int(parameter.scaling.divisor):
+        scaling = parameter.scaling
+        if (scaling.multiplier, scaling.divisor, scaling.base, scaling.offset) == (0, 0, 0, 0):
+            yield ctx.at(SCALING_ALL_ZERO, f"{parameter.keyword}: the descriptor says scaling is supported but "
+                         "every scaling field is 0, as Figure C.11 writes it; Figure C.5 divides by the divisor",
+                         _node(entry, 13))
+        elif scaling.divisor == 0 and _is_int(scaling.divisor):
             yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling divisor is 0 but the descriptor says scaling "
                          "is supported; Figure C.5 divides by it", _node(entry, 13))
 

@@ -22,6 +22,9 @@ SCALING_ALL_ZERO = rule(
         EDS, writes exactly this (`0x0004` and `0,0,0,0`). Where a figure of the text
         conflicts with its formula the file is not an error: a warning that names both.
         A divisor of 0 beside any other scaling value is no figure's and stays EDS319.
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param1 = 0,,,0x0004,0xC6,1,"Slot Naming Convention","","",0,4,0,0,0,0,0;

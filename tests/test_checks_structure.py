@@ -138,6 +138,18 @@ CASES = [
     ("EDS222", eds({"Assembly": ASSEMBLY + "\nVariantX1 = 1;"}), "VariantX1",
      eds({"Assembly": ASSEMBLY + "\nVariant1 = 1;"})),
     ("EDS221", eds({"Port": PORT.replace("TCP", "DeviceNet")}), "[Port]", eds({"Port": PORT})),
+    # issue 20 item 1: the classification against the content, both directions
+    ("EDS224", eds({"Device Classification": "Class1 = DeviceNet;", "Port": PORT}), "Port1",
+     eds({"Device Classification": "Class1 = DeviceNet;\nClass2 = EtherNetIP;", "Port": PORT})),
+    ("EDS224", eds({"Device Classification": "Class1 = ControlNet;", "TCP/IP Interface Class": "Revision = 4;"}),
+     "[TCP/IP Interface Class]",
+     eds({"Device Classification": "Class1 = ControlNet;\nClass2 = EtherNetIP;",
+          "TCP/IP Interface Class": "Revision = 4;"})),
+    ("EDS225", eds({"DeviceNet Class": "Revision = 2;"}), "[DeviceNet Class]",
+     eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = DeviceNet;", "DeviceNet Class": "Revision = 2;"})),
+    ("EDS226", eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = DeviceNet;", "Port": PORT}), "[Port]",
+     eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = DeviceNet;",
+          "Port": PORT + '\nPort2 = DeviceNet, "DeviceNet", "20 03 24 01", 2;'})),
 ]
 
 

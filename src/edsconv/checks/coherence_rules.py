@@ -33,3 +33,87 @@ SCALING_ALL_ZERO = rule(
         Param1 = 0,,,0x0000,0xC6,1,"Slot Naming Convention","","",0,4,0,0,0,0,0;   $ bit 2 clear
     """),
 )
+ETHERNETIP_CONTENT_UNCLASSIFIED = rule(
+    "EDS224", ERROR, "C.4.2.2.1", "The file describes an EtherNet/IP port or EtherNet/IP objects, but no ClassN is "
+    "EtherNetIP",
+    explanation="""
+        The file is classified under another public network (DeviceNet or ControlNet)
+        but describes an EtherNet/IP device: a `PortN` of type `TCP` ("an EtherNet/IP
+        capable TCP port", C.4.1.4.10), or a section of an object only EtherNet/IP
+        devices have (`[TCP/IP Interface Class]`, `[Ethernet Link Class]`, `[DLR Class]`,
+        `[EtherNet/IP Security Class]`; names and class IDs from eds-pie 1.2.0). "For any
+        EtherNet/IP compliant device, the Device Classification section of its EDS shall
+        contain at least one ClassN keyword entry with its first field set to EtherNetIP"
+        (C.4.2.2.1): an error. A file with no public classification at all is EDS205's.
+        This is the reverse of EDS221 (classified EtherNetIP, no TCP port).
+    """,
+    bad=block("""
+        [Device Classification]
+                Class1 = DeviceNet;
+        [Port]
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 2;
+    """),
+    good=block("""
+        [Device Classification]
+                Class1 = DeviceNet;
+                Class2 = EtherNetIP;
+        [Port]
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 2;
+    """),
+)
+NETWORK_CONTENT_UNCLASSIFIED = rule(
+    "EDS225", WARNING, "C.4.1.4.4", "The file describes a DeviceNet node, but [Device Classification] does not "
+    "list DeviceNet",
+    explanation="""
+        The file has a `[Device Classification]` section that does not list `DeviceNet`,
+        yet it describes the device as a DeviceNet node: an `[IO_Info]` section (the
+        I/O messages of a DeviceNet slave) or a `[DeviceNet Class]` section (the
+        DeviceNet object, class 3). The section "shall classify the device described by
+        the EDS into one or more categories" (C.4.1.4.4). A warning, not an error: the
+        2003 text requires a classification only of EtherNet/IP files (Table C.27, EDS224),
+        and DeviceNet files older than the section leave it out (not reported). A
+        `DeviceNet` port alone is not reported: an EtherNet/IP device with a DeviceNet
+        scanner port (one real robot controller's file) is no DeviceNet node.
+    """,
+    bad=block("""
+        [Device Classification]
+                Class1 = EtherNetIP;
+        [IO_Info]
+                ...
+    """),
+    good=block("""
+        [Device Classification]
+                Class1 = EtherNetIP;
+                Class2 = DeviceNet;
+        [IO_Info]
+                ...
+    """),
+)
+CLASSIFIED_NETWORK_WITHOUT_PORT = rule(
+    "EDS226", WARNING, "C.4.1.4.10", "The device is classified DeviceNet or ControlNet, but [Port] lists no port "
+    "of that network",
+    explanation="""
+        A `ClassN` entry classifies the device under `DeviceNet` (`ControlNet`), and the
+        `[Port]` section lists the device's ports, but none has the Port Type Name
+        `DeviceNet` (`ControlNet` or `ControlNet_Redundant`) of C.4.1.4.10. The
+        counterpart of EDS221 for the other public networks; a warning, because the
+        2003 text states the port requirement for EtherNet/IP only (C.4.2.2.2) and a
+        DeviceNet slave that routes nothing need not describe its port. Not reported
+        when a port type is misspelt (EDS333).
+    """,
+    bad=block("""
+        [Device Classification]
+                Class1 = EtherNetIP;
+                Class2 = DeviceNet;
+        [Port]
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 2;
+    """),
+    good=block("""
+        [Device Classification]
+                Class1 = EtherNetIP;
+                Class2 = DeviceNet;
+        [Port]
+                Port1 = TCP, "EtherNet/IP", "20 F5 24 01", 2;
+                Port3 = DeviceNet, "DeviceNet", "20 03 24 01", 3;
+    """),
+)

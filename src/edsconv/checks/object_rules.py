@@ -246,7 +246,8 @@ IO_SIZES_DISAGREE = rule(
     labels=TRIGGERS,
 )
 OPAQUE_ASSEMBLY = rule(
-    "EDS514", INFO, "C.4.1.4.8", "An assembly is opaque data: its one member is the assembly itself, with a size in bits",
+    "EDS514", INFO, "C.4.1.4.8",
+    "An assembly is opaque data: its one member is the assembly itself, with a size in bits",
     explanation="""
         EZ-EDS writes an assembly whose layout the EDS does not describe as one member that
         names the assembly itself with the assembly's full size in bits

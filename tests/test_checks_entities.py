@@ -90,6 +90,8 @@ CASES = {
                eds(params=[PARAM_RPI, usint("0x0004", scaling=",1,2,1,0")])),
     "EDS350": (eds(params=[PARAM_RPI, usint("0x0004", values="0,4,0", scaling=",0,0,0,0", mark=M)]),
                eds(params=[PARAM_RPI, usint("0x0000", values="0,4,0", scaling=",0,0,0,0")])),
+    "EDS351": (eds(params=[PARAM_RPI, usint("0x0002", values="0,2,0"), 'Enum2 = 0,"Off",1,"On",3,"Test";' + M]),
+               eds(params=[PARAM_RPI, usint("0x0002", values="0,3,0"), 'Enum2 = 0,"Off",1,"On",3,"Test";'])),
     "EDS320": (eds(params=[PARAM_RPI, usint(size=2, mark=M)]), eds(params=[PARAM_RPI, usint(size=1)])),
     "EDS321": (eds(params=[PARAM_RPI, usint("0x0000", mark=M), 'Enum2 = 0,"Off",1,"On";']),
                eds(params=[PARAM_RPI, usint("0x0002"), 'Enum2 = 0,"Off",1,"On";'])),

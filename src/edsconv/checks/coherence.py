@@ -1,5 +1,6 @@
 """Checks of issue 20: what the [Device Classification] says against what the file describes (EDS224 -
-EDS226), in both directions; the rules are in :mod:`edsconv.checks.coherence_rules`.
+EDS226), in both directions, and an enumeration against its parameter's range (EDS351); the rules are in
+:mod:`edsconv.checks.coherence_rules`.
 
 EDS205 (no EtherNetIP class where nothing else is classified) and EDS221 (classified EtherNetIP, no TCP
 port) are the structure checks' and are not repeated here.
@@ -13,11 +14,14 @@ from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
 from edsconv.checks.coherence_rules import (
     CLASSIFIED_NETWORK_WITHOUT_PORT,
+    ENUM_CHOICE_OUT_OF_RANGE,
     ETHERNETIP_CONTENT_UNCLASSIFIED,
     NETWORK_CONTENT_UNCLASSIFIED,
 )
 from edsconv.diagnostics import Diagnostic
-from edsconv.eds.syntax import Section
+from edsconv.eds.syntax import Entry, Field, Scalar, Section
+from edsconv.model import Parameter
+from edsconv.model.device import is_integer
 
 #: Sections of objects only EtherNet/IP devices have (eds-pie 1.2.0 class IDs 0xF5, 0xF6, 0x47, 0x5E).
 ETHERNETIP_OBJECT_SECTIONS = ("TCP/IP Interface Class", "Ethernet Link Class", "DLR Class",
@@ -79,3 +83,42 @@ def classified_network_ports(ctx: Context) -> Iterator[Diagnostic]:
             yield ctx.at(CLASSIFIED_NETWORK_WITHOUT_PORT, f"the device is classified {network} but no PortN has "
                          f"the port type {' or '.join(port_types)} (port types: {', '.join(sorted(types))})",
                          port_section)
+
+
+#: the parameter families whose EnumN is checked against their own range, with their Enum family
+_ENUM_OF = {"Param": "Enum", "ProxyParam": "ProxyEnum"}
+_INTEGER_KINDS = frozenset({"unsigned", "signed"})
+
+
+def _integer(item: Field) -> int | None:
+    """An Enum value field as an integer (decimal, 0x hex or 0b binary); None when it is no number (EDS101)."""
+    raw = item.value.raw if isinstance(item.value, Scalar) else ""
+    try:
+        return int(raw, 0) if raw[:2].lower() in ("0x", "0b") else int(raw)
+    except ValueError:
+        return None
+
+
+def _range(parameter: Parameter) -> tuple[int, int] | None:
+    kind = parameter.data_type.kind if parameter.data_type is not None else None
+    if kind in _INTEGER_KINDS and is_integer(parameter.minimum) and is_integer(parameter.maximum):
+        return parameter.minimum, parameter.maximum
+    return None
+
+
+@check(ENUM_CHOICE_OUT_OF_RANGE)
+def enum_ranges(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.4.6: the choices of an EnumN are values of its parameter, within Minimum..Maximum."""
+    params = ctx.eds.section("Params")
+    if params is None:
+        return
+    for parameter in ctx.device.parameters.values():
+        bounds = _range(parameter) if parameter.family in _ENUM_OF else None
+        enum: Entry | None = params.entry(f"{_ENUM_OF[parameter.family]}{parameter.number}") if bounds else None
+        if enum is None or bounds is None:
+            continue
+        for item in enum.fields[::2]:
+            value = _integer(item)
+            if value is not None and not bounds[0] <= value <= bounds[1]:
+                yield ctx.at(ENUM_CHOICE_OUT_OF_RANGE, f"{enum.keyword} offers {item.raw}, outside "
+                             f"{parameter.keyword}'s minimum {bounds[0]} .. maximum {bounds[1]}", item)

@@ -117,3 +117,50 @@ CLASSIFIED_NETWORK_WITHOUT_PORT = rule(
                 Port3 = DeviceNet, "DeviceNet", "20 03 24 01", 3;
     """),
 )
+ENUM_CHOICE_OUT_OF_RANGE = rule(
+    "EDS351", WARNING, "C.4.1.4.6", "An EnumN offers a choice outside its parameter's minimum..maximum",
+    explanation="""
+        An `EnumN` (`ProxyEnumN`) is "an enumeration list of parameter choices to present
+        to the user" (C.4.1.4.6), and a value of the parameter lies between its Minimum and
+        Maximum (Table C.13). A choice outside that range is offered but cannot be set:
+        the two entries contradict each other. A warning: no sentence of the text binds
+        the Enum values to the range in so many words. Checked for integer parameters
+        that write both a Minimum and a Maximum; not for bit strings, whose Enum values
+        name bits, nor for a ProxiedEnum alone (its parameter's range may be the
+        adapter's, C.4.1.5.3).
+    """,
+    bad=block("""
+        Param2 = 0,,,0x0002,0xC6,1,"Mode","","",0,2,0;
+        Enum2 = 0,"Off", 1,"On", 3,"Test";          $ 3 is above the maximum 2
+    """),
+    good=block("""
+        Param2 = 0,,,0x0002,0xC6,1,"Mode","","",0,3,0;
+        Enum2 = 0,"Off", 1,"On", 3,"Test";
+    """),
+)
+FORWARD_REFERENCE_IN_SECTION = rule(
+    "EDS227", WARNING, "C.4.1.2.1", "An entry refers to an entry placed later in the same section",
+    clause_note="Figure C.15",
+    explanation="""
+        An entry names an entry that comes later in its own section (an assembly member
+        naming a later assembly). C.4.1.2.1 lets the optional sections stand "in any order
+        provided that no forward references exist within the EDS file", which read
+        literally forbids this too; but the text's own Figure C.15 (informative) does it
+        (`Assem1` names `ProxyAssem1` and `ProxyAssem2`, written after it), and 18 of the
+        61 real files (17 of one vendor's I/O modules, one of another's) do it in
+        `[Assembly]`. Where the figure and the sentence conflict, a warning that names both:
+        the sentence is about the order of sections, and a reference to a later
+        section stays EDS204's error. Reported once per section, at the first such
+        reference.
+    """,
+    bad=block("""
+        [Assembly]
+                Assem1 = "Outer", "", 2, , , , , Assem2;
+                Assem2 = "Inner", "", 2, , , , 16, ;
+    """),
+    good=block("""
+        [Assembly]
+                Assem2 = "Inner", "", 2, , , , 16, ;
+                Assem1 = "Outer", "", 2, , , , , Assem2;
+    """),
+)

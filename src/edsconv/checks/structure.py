@@ -23,6 +23,7 @@ from collections.abc import Iterator
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check, keywords
+from edsconv.checks.coherence_rules import FORWARD_REFERENCE_IN_SECTION
 from edsconv.checks.structure_rules import (
     FIELDS_BEYOND_2003,
     FORWARD_REFERENCE,
@@ -208,12 +209,13 @@ def _reference_places(ctx: Context) -> Iterator[tuple[Entry, int, str, Entry]]:
 _CONNECTION_PATH_FIELD = 14
 
 
-@check(FORWARD_REFERENCE)
+@check(FORWARD_REFERENCE, FORWARD_REFERENCE_IN_SECTION)
 def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.2.1: sections may be in any order "provided that no forward references exist".
 
     Reported once per pair of sections, at the first reference that points forward:
-    moving the referenced section up fixes them all.
+    moving the referenced section up fixes them all. A reference forward within one
+    section is a warning (EDS227): Figure C.15 makes one.
     """
     section_of = {id(entry): (index, section) for index, section in enumerate(ctx.eds.sections)
                   for entry in section.entries}
@@ -221,10 +223,17 @@ def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     for entry, field_index, named, target_entry in _reference_places(ctx):
         source = section_of.get(id(entry))
         target = section_of.get(id(target_entry))
-        if source is None or target is None or target[0] <= source[0] or (source[0], target[0]) in reported:
+        if source is None or target is None or target[0] < source[0] or (source[0], target[0]) in reported:
+            continue
+        node = entry.fields[field_index] if field_index < len(entry.fields) else entry
+        if target[0] == source[0]:
+            if target_entry.offset > entry.offset:
+                reported.add((source[0], target[0]))
+                yield ctx.at(FORWARD_REFERENCE_IN_SECTION, f"{entry.keyword} refers to {named}, placed later in "
+                             f"[{source[1].name}] (line {target_entry.line}); C.4.1.2.1 asks for no forward "
+                             "references, Figure C.15 makes this one", node)
             continue
         reported.add((source[0], target[0]))
-        node = entry.fields[field_index] if field_index < len(entry.fields) else entry
         yield ctx.at(FORWARD_REFERENCE, f"{entry.keyword} in [{source[1].name}] refers to {named} "
                                         f"of [{target[1].name}], which comes later (line {target_entry.line}); "
                                         f"place [{target[1].name}] before [{source[1].name}]", node)

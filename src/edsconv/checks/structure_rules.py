@@ -65,7 +65,8 @@ FORWARD_REFERENCE = rule(
         gives both lines. Reported once per pair of sections: moving the referenced
         section up fixes them all. An error, as the text's "shall": the one real file of
         61 that breaks it is a hand-written library demo, so no tool practice argues
-        for less.
+        for less. A reference to a later entry of the same section is EDS227, a
+        warning: the text's own Figure C.15 makes one.
     """,
     bad=block("""
         [Connection Manager]

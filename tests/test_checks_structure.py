@@ -122,10 +122,14 @@ CASES = [
     ("EDS219", eds({"Params": "MaxInst = 4;"}), "MaxInst",
      eds({"ParamClass": "MaxInst = 4;\nDescriptor = 0x0000;\nCfgAssembly = 0;"})),
     ("EDS219", eds({"Capacity": "MaxInst = 4;"}), "MaxInst", eds({"Capacity": "MaxIOConnections = 4;"})),
-    ("EDS222", eds({"Connection Manger": "Connection1 = 0x04010002;"}), "[Connection Manger]",
+    ("EDS228", eds({"Connection Manger": "Connection1 = 0x04010002;"}), "[Connection Manger]",
      eds({"Capacity": "MaxIOConnections = 4;"})),
-    ("EDS222", eds({"Diagnostics Extra": "MaxIOConnections = 4;"}), "[Diagnostics Extra]",
+    ("EDS228", eds({"Diagnostics Extra": "MaxIOConnections = 4;"}), "[Diagnostics Extra]",
      eds({"65535_Capacity": "Max = 4;"})),
+    ("EDS228", eds({"PARAMS": 'Param1 = 0, , , 0x0000, 0xC6, 1, "P", "", "", 0, 10, 1;'}), "[PARAMS]",
+     eds({"Params": 'Param1 = 0, , , 0x0000, 0xC6, 1, "P", "", "", 0, 10, 1;'})),
+    ("EDS230", eds({"Device": MINIMAL["Device"] + '\nProdname = "Adapter 2";'}), "Prodname",
+     eds({"Device": MINIMAL["Device"] + '\nCatalog = "Adapter 2";'})),
     ("EDS222", eds({"Device": MINIMAL["Device"] + '\nCatalogue = "PRB-1";'}), "Catalogue",
      eds({"Device": MINIMAL["Device"] + '\nCatalog = "PRB-1";'})),
     ("EDS222", eds({"Device": MINIMAL["Device"] + '\nIconContent = "AA";'}), "IconContent",
@@ -133,7 +137,7 @@ CASES = [
     ("EDS222", eds({"Capacity": "MaxFoo = 4;"}), "MaxFoo", eds({"Capacity": "MaxIOConnections = 4;"})),
     ("EDS222", eds({"Params": 'Parameter1 = 0, , , 0x0000, 0xC6, 1, "P", "", "", 0, 10, 1;'}), "Parameter1",
      eds({"Params": 'Param1 = 0, , , 0x0000, 0xC6, 1, "P", "", "", 0, 10, 1;'})),
-    ("EDS222", eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = Profibus;"}), "Profibus",
+    ("EDS211", eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = Profibus;"}), "Profibus",
      eds({"Device Classification": "Class1 = EtherNetIP;\nClass2 = Safety;"})),
     ("EDS222", eds({"Assembly": ASSEMBLY + "\nVariantX1 = 1;"}), "VariantX1",
      eds({"Assembly": ASSEMBLY + "\nVariant1 = 1;"})),
@@ -209,7 +213,7 @@ def test_forward_reference_through_a_connection_path():
     (eds({"Connection Manager": "Conn2 = 0x04010002;"}), "Connection2"),
 ])
 def test_an_unknown_keyword_offers_the_closest_defined_one(text, meant):
-    (message,) = [d.message for d in edsconv.analyse(edsconv.parse(text))[1] if d.code == "EDS222"]
+    (message,) = [d.message for d in edsconv.analyse(edsconv.parse(text))[1] if d.code in ("EDS222", "EDS228")]
     assert message.endswith(f"did you mean {meant}?")
 
 

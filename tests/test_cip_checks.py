@@ -78,14 +78,15 @@ def test_modelled_content_draws_no_beyond_2003_note(relative):
 
 
 def test_unknown_content_is_still_reported():
-    """Unknown content: EDS222 (a warning, with "did you mean"); a keyword the tables define for another
-    section: EDS219; a section name outside the keyword rules that no table defines: EDS006 too."""
+    """Unknown content: EDS222 for an entry keyword (a warning, with "did you mean"), EDS228 for a section
+    (an error); a keyword the tables define for another section: EDS219; a section name outside the keyword
+    rules that no table defines: EDS006 too."""
     text = ("[File]\nDescText = \"x\";\nCreateDate = 01-02-2024;\nCreateTime = 10:00:00;\nRevision = 1.0;\n"
             "[Capacity]\nMaxIOConnections = 4;\nMaxFoo = 1;\n65535_Foo = 1;\nMaxInst = 2;\n"
             "[Diagnostics/Extra]\nRevision = 1;\n[TCP/IP Interface Class]\nRevision = 4;\n")
     found = sorted((d.code, d.line) for d in edsconv.analyse(edsconv.parse(text))[1]
-                   if d.code in (*BEYOND_2003, "EDS222"))
-    assert found == [("EDS006", 11), ("EDS219", 10), ("EDS222", 8), ("EDS222", 11)]
+                   if d.code in (*BEYOND_2003, "EDS222", "EDS228"))
+    assert found == [("EDS006", 11), ("EDS219", 10), ("EDS222", 8), ("EDS228", 11)]
 
 
 def test_the_safety_classification_and_fields_are_known():

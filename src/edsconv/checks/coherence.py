@@ -8,7 +8,7 @@ port) are the structure checks' and are not repeated here.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
@@ -16,6 +16,7 @@ from edsconv.checks.coherence_rules import (
     CLASSIFIED_NETWORK_WITHOUT_PORT,
     ENUM_CHOICE_OUT_OF_RANGE,
     ETHERNETIP_CONTENT_UNCLASSIFIED,
+    KEYWORD_CASE_VARIANTS,
     NETWORK_CONTENT_UNCLASSIFIED,
 )
 from edsconv.diagnostics import Diagnostic
@@ -122,3 +123,31 @@ def enum_ranges(ctx: Context) -> Iterator[Diagnostic]:
             if value is not None and not bounds[0] <= value <= bounds[1]:
                 yield ctx.at(ENUM_CHOICE_OUT_OF_RANGE, f"{enum.keyword} offers {item.raw}, outside "
                              f"{parameter.keyword}'s minimum {bounds[0]} .. maximum {bounds[1]}", item)
+
+
+def case_variants(names: Iterable[str]) -> set[str]:
+    """The names that share their letters, in other case, with another of ``names`` (EDS230)."""
+    spellings: dict[str, set[str]] = {}
+    for name in names:
+        spellings.setdefault(name.casefold(), set()).add(name)
+    return {name for group in spellings.values() if len(group) > 1 for name in group}
+
+
+@check(KEYWORD_CASE_VARIANTS)
+def keyword_case(ctx: Context) -> Iterator[Diagnostic]:
+    """C.4.1.2.2.3, C.4.1.2.2.9: keywords are case-sensitive and unique in their section; two spellings
+    of one keyword that differ only in case are one keyword written twice, as a case-blind tool reads it."""
+    first: dict[str, Section] = {}
+    for section in ctx.eds.sections:
+        earlier = first.setdefault(section.name.casefold(), section)
+        if earlier.name != section.name:
+            yield ctx.at(KEYWORD_CASE_VARIANTS, f"[{section.name}] and [{earlier.name}] (line {earlier.line}) "
+                         "differ only in letter case; keywords are case-sensitive, so one of them is not the "
+                         "section it looks like", section)
+        entries: dict[str, Entry] = {}
+        for entry in section.entries:
+            seen = entries.setdefault(entry.keyword.casefold(), entry)
+            if seen.keyword != entry.keyword:
+                yield ctx.at(KEYWORD_CASE_VARIANTS, f"{entry.keyword} and {seen.keyword} (line {seen.line}) in "
+                             f"[{section.name}] differ only in letter case; keywords are case-sensitive, so one of "
+                             "them is not the keyword it looks like", entry)

@@ -164,3 +164,53 @@ FORWARD_REFERENCE_IN_SECTION = rule(
                 Assem1 = "Outer", "", 2, , , , , Assem2;
     """),
 )
+UNDEFINED_SECTION = rule(
+    "EDS228", ERROR, "C.4.1.2.2.5", "A section name that no table defines and that is not vendor-specific",
+    clause_note="Table C.3, C.4.1.2.2.6",
+    fix="safe",
+    explanation="""
+        "The valid section legal delimiters shall be those specified in Table C.3"
+        (C.4.1.2.2.5), and a section keyword is public or vendor-specific (C.4.1.2.2.6,
+        `[VendorID_keyword]`). The section is neither: not in Table C.3, not one of the
+        sections later CIP editions define (`[Capacity]`, `[TCP/IP Interface Class]` ...,
+        each with its source in `edsconv.cip_tables`: eds-pie 1.2.0's tables or the real
+        files), and not vendor-specific. Tools skip it, so what it says is lost. When a
+        defined name is close, the message offers it ("did you mean"). An error, as the
+        text's "shall"; none of the 61 real files has such a section. Keywords are
+        case-sensitive (see EDS230), so `[PARAMS]` is not `[Params]`: `lint --fix` writes
+        a Table C.3 name spelt in other letter case as the table does. Until issue 20
+        this was EDS222, a warning.
+    """,
+    bad=block("""
+        [Connection Manger]                     $ did you mean [Connection Manager]?
+    """),
+    good=block("""
+        [Connection Manager]
+        [65535_Connection Notes]                $ vendor-specific
+    """),
+)
+KEYWORD_CASE_VARIANTS = rule(
+    "EDS230", ERROR, "C.4.1.2.2.9", "One keyword is written twice in one section (or two sections), differing only in "
+    "letter case",
+    explanation="""
+        Two entry keywords of one section (or two section names) are the same letters
+        in different case: `ProdName` and `Prodname`. Keywords are case-sensitive: the
+        keyword characters of C.4.1.2.2.3 list upper and lower case letters as distinct
+        characters, and where the text lets case vary it says so (hexadecimal digits,
+        C.4.1.3.7; EPATH bytes, C.4.1.3.6), which it never says of keywords. So one of
+        the two is not the keyword it looks like, and a tool that compares keywords
+        without regard to case reads the same entry twice, which C.4.1.2.2.9 forbids
+        ("a unique sequence of keyword characters", EDS009). An error, reported at the
+        later spelling and naming both; the misspelt one is not also reported as an
+        undefined keyword (EDS222, EDS228).
+    """,
+    bad=block("""
+        [Device]
+                ProdName = "Adapter";
+                Prodname = "Adapter X";
+    """),
+    good=block("""
+        [Device]
+                ProdName = "Adapter";
+    """),
+)

@@ -23,7 +23,8 @@ from collections.abc import Iterator
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check, keywords
-from edsconv.checks.coherence_rules import FORWARD_REFERENCE_IN_SECTION
+from edsconv.checks.coherence import case_variants
+from edsconv.checks.coherence_rules import FORWARD_REFERENCE_IN_SECTION, UNDEFINED_SECTION
 from edsconv.checks.structure_rules import (
     FIELDS_BEYOND_2003,
     FORWARD_REFERENCE,
@@ -169,16 +170,17 @@ def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
-@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNDEFINED_SECTION)
 def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
+    variants = case_variants(section.name for section in ctx.eds.sections)  # EDS230 says what they are
     for section in ctx.eds.sections:
         problem = _keyword_problem(section.name)
         if problem is not None:
             yield ctx.at(problem[0], f"section [{section.name}]: {problem[1]}", section)
-        elif cip_tables.known(section.name) is None:
+        elif cip_tables.known(section.name) is None and section.name not in variants:
             meant = keywords.closest(section.name, keywords.section_names())
-            yield ctx.at(UNKNOWN_KEYWORD, f"[{section.name}] {_UNDEFINED}{_did_you_mean(meant and f'[{meant}]')}",
-                         section, clause="C.4.1.2.2.5")
+            yield ctx.at(UNDEFINED_SECTION, f"[{section.name}] {_UNDEFINED}{_did_you_mean(meant and f'[{meant}]')}",
+                         section)
 
 
 #: What EDS222 says of a keyword no table defines.
@@ -300,11 +302,13 @@ def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     for section in ctx.eds.sections:
         spec = tables.SECTIONS.get(section.name)
         newer = spec is None and cip_tables.section_spec(section.name) is not None
+        variants = case_variants(entry.keyword for entry in section.entries)  # EDS230 says what they are
         for entry in section.entries:
             problem = _keyword_problem(entry.keyword)
             if problem is not None:
                 yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
-            elif (spec is not None or newer) and cip_tables.known(section.name, entry.keyword) is None:
+            elif (spec is not None or newer) and entry.keyword not in variants \
+                    and cip_tables.known(section.name, entry.keyword) is None:
                 if tables.entries_named(entry.keyword) or keywords.newer_entry(section.name, entry.keyword):
                     yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(section.name, entry.keyword)} "
                                                       "(kept)", entry)
@@ -415,7 +419,7 @@ def _choice_fields(spec: tables.EntrySpec, count: int) -> tuple[tuple[int, table
     return tuple(found)
 
 
-@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
+@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT)
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
     for entry, spec in _specified_entries(ctx):
@@ -449,8 +453,8 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
         # An open list (vendors may add keywords); the public ones later CIP editions add, such as
         # the Safety classification, are cip_tables.known_choice and not reported
         meant = keywords.closest(word, keywords.classification_keywords())
-        return ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
-                                       f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)
+        return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
+                                    f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)
     vendor = " or a VendorID_keyword" if field_spec.vendor_keywords else ""
     return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {word!r}; allowed: "
                                 f"{allowed}{vendor}", item)

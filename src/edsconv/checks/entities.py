@@ -129,11 +129,13 @@ def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
     instances, and C.4.1.4.6 lets an instance go without a ParamN entry."""
     group_members = {id(member) for group in ctx.device.groups for member in group.members}
     for ref in iter_references(ctx.device):
+        if ref.entry is not None and ref.entry.keyword.startswith("Proxied"):
+            continue  # names an entry of the pair, maybe the adapter's: merge checks it (see _own)
         if ref.target is None and id(ref) not in group_members:
             where = ref.entry.keyword if ref.entry is not None else "a reference"
             yield ctx.at(UNDEFINED_REFERENCE, f"{where} names {ref.keyword}, which is not defined",
                          _node(ref.entry, ref.field_index), clause=_reference_clause(ref))
-    for connection in ctx.device.connections.values():
+    for connection in _own(ctx.device.connections.values()):
         for item in _path_references(connection):
             if ctx.device.resolve(item.reference or "") is None:
                 yield ctx.at(UNDEFINED_REFERENCE, f"{connection.keyword}: the path names [{item.reference}], "

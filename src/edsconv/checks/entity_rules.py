@@ -29,6 +29,9 @@ UNDEFINED_REFERENCE = rule(
         numbers (Table C.19), and C.4.1.4.6 says "it is not required that ALL parameter
         object instances have a corresponding ParamN entry", so a group may list an
         instance the EDS does not describe.
+        A reference in a ProxiedParam, ProxiedAssem or ProxiedConnect is not checked in
+        the module's file alone: it names an entry of the pair, which may be the
+        adapter's (C.4.1.5.3); `edsconv merge` checks it in the entry the pair forms.
     """,
     bad=block("""
         Assem100 = "In", "", 4,,,, 32, Param9;   $ no Param9 in [Params]

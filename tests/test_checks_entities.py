@@ -88,6 +88,10 @@ CASES = {
                eds(params=[PARAM_RPI, 'Param3 = 0,,,0x0000,0xD2,2,"Word","","",,,0,,,,;'])),
     "EDS319": (eds(params=[PARAM_RPI, usint("0x0004", scaling=",1,0,1,0", mark=M)]),
                eds(params=[PARAM_RPI, usint("0x0004", scaling=",1,2,1,0")])),
+    "EDS350": (eds(params=[PARAM_RPI, usint("0x0004", values="0,4,0", scaling=",0,0,0,0", mark=M)]),
+               eds(params=[PARAM_RPI, usint("0x0000", values="0,4,0", scaling=",0,0,0,0")])),
+    "EDS351": (eds(params=[PARAM_RPI, usint("0x0002", values="0,2,0"), 'Enum2 = 0,"Off",1,"On",3,"Test";' + M]),
+               eds(params=[PARAM_RPI, usint("0x0002", values="0,3,0"), 'Enum2 = 0,"Off",1,"On",3,"Test";'])),
     "EDS320": (eds(params=[PARAM_RPI, usint(size=2, mark=M)]), eds(params=[PARAM_RPI, usint(size=1)])),
     "EDS321": (eds(params=[PARAM_RPI, usint("0x0000", mark=M), 'Enum2 = 0,"Off",1,"On";']),
                eds(params=[PARAM_RPI, usint("0x0002"), 'Enum2 = 0,"Off",1,"On";'])),
@@ -251,6 +255,15 @@ def test_legal_slots_of_another_chassis_are_not_bounded_by_this_one():
 def test_scaling_multiplier_and_base_may_be_0():
     # Figure C.5 divides only by the divisor; Figure C.11 sets the scaling bit with 0 in every field
     assert found(eds(params=[PARAM_RPI, usint("0x0004", scaling=",0,1,0,0")]), "EDS319") == []
+
+
+def test_figure_c11_scaling_is_a_warning_naming_figure_and_formula():
+    # Figure C.11 sets the scaling bit with 0 in every scaling field: not EDS319's error (issue 20 item 10)
+    text = eds(params=[PARAM_RPI, usint("0x0004", values="0,4,0", scaling=",0,0,0,0")])
+    assert found(text, "EDS319") == []
+    (warning,) = [d for d in edsconv.analyse(edsconv.parse(text))[1] if d.code == "EDS350"]
+    assert "Figure C.11" in warning.message and "Figure C.5" in warning.message
+    assert found(eds(params=[PARAM_RPI, usint("0x0004", scaling=",0,0,1,0")]), "EDS319") != []
 
 
 REAL_PARAM = 'Param3 = 0,,,0x0000,0xCA,4,"Value","","",{minimum},{maximum},{default};'

@@ -78,14 +78,15 @@ def test_modelled_content_draws_no_beyond_2003_note(relative):
 
 
 def test_unknown_content_is_still_reported():
-    """Unknown content: EDS222 (a warning, with "did you mean"); a keyword the tables define for another
-    section: EDS219; a section name outside the keyword rules that no table defines: EDS006 too."""
+    """Unknown content: EDS222 for an entry keyword (a warning, with "did you mean"), EDS228 for a section
+    (an error); a keyword the tables define for another section: EDS219; a section name outside the keyword
+    rules that no table defines: EDS006 too."""
     text = ("[File]\nDescText = \"x\";\nCreateDate = 01-02-2024;\nCreateTime = 10:00:00;\nRevision = 1.0;\n"
             "[Capacity]\nMaxIOConnections = 4;\nMaxFoo = 1;\n65535_Foo = 1;\nMaxInst = 2;\n"
             "[Diagnostics/Extra]\nRevision = 1;\n[TCP/IP Interface Class]\nRevision = 4;\n")
     found = sorted((d.code, d.line) for d in edsconv.analyse(edsconv.parse(text))[1]
-                   if d.code in (*BEYOND_2003, "EDS222"))
-    assert found == [("EDS006", 11), ("EDS219", 10), ("EDS222", 8), ("EDS222", 11)]
+                   if d.code in (*BEYOND_2003, "EDS222", "EDS228"))
+    assert found == [("EDS006", 11), ("EDS219", 10), ("EDS222", 8), ("EDS228", 11)]
 
 
 def test_the_safety_classification_and_fields_are_known():
@@ -182,6 +183,14 @@ def test_opaque_assembly_is_data_of_its_size():
     (assembly,) = found.assemblies.values()
     assert assembly.opaque and found.assembly_bits(assembly) == 1024
     assert not {"EDS326", "EDS327"} & set(codes("idioms/opaque_self_assembly.eds"))
+
+
+def test_opaque_assembly_of_another_size_is_a_size_disagreement_not_a_cycle():
+    """Issue 20 item 11: 4096 bits against 496 bytes is EDS324, and the idiom is still recognised."""
+    relative = "shall/C.4.1.4.8_opaque_assembly_size_agrees.eds"
+    found = device(relative)
+    assert found.assemblies["Assem150"].opaque and found.assembly_bits(found.assemblies["Assem150"]) == 496 * 8
+    assert [c for c in codes(relative) if c in {"EDS324", "EDS326", "EDS327", "EDS514"}] == ["EDS324", "EDS514"]
 
 
 def test_the_typed_view_attaches_to_a_device_read_from_xml():

@@ -21,7 +21,7 @@ FAULTS = {
     "EDS099": ("VendCode = 65535;", "VendCode = 65535;   $ edsconv: ignore[EDS102]"),
     "EDS103": ("ProdCode = 1001;", "ProdCode = 01001;"),
     "EDS207": ('"",                     $ help string', ',                     $ help string'),
-    "EDS222": ("[Device Classification]", "[DEVICE classification]"),
+    "EDS228": ("[Device Classification]", "[DEVICE classification]"),
 }
 
 
@@ -61,10 +61,10 @@ def test_faults_without_a_single_repair_are_left_alone():
     text = GOOD.replace('"Exclusive Owner",', ",", 1)
     outcome = fix.fix_source(text.encode(), "x.eds", lint.check)
     assert "EDS207" in [d.code for d in outcome.diagnostics] and outcome.fixed == []
-    # [DEVICE] when the file already has a [Device]: renaming would make a duplicate
+    # [DEVICE] when the file already has a [Device]: renaming would make a duplicate (EDS230 says what it is)
     text = GOOD + "\n[DEVICE]\n        Extra = 1;\n"
     outcome = fix.fix_source(text.encode(), "x.eds", lint.check)
-    assert "EDS222" in [d.code for d in outcome.diagnostics] and outcome.data == text.encode()
+    assert "EDS230" in [d.code for d in outcome.diagnostics] and outcome.data == text.encode()
 
 
 def test_unused_code_among_several_is_removed_from_the_list():

@@ -143,6 +143,10 @@ def test_adapter_without_rack_entries():
     assert codes(result) == ["EDS401"]
 
 
+#: the parameters ProxyAssem members name: a merge refuses an entry naming undefined ones (EDS301)
+PARAMS_1_2 = '[Params]\nParam1 = 0,,,0,0xC6,1,"p","","",0,255,0;\nParam2 = 0,,,0,0xC6,1,"q","","",0,255,0;\n'
+
+
 def _merge(adapter_body: str, module_body: str):
     adapter = edsconv.parse(adapter_body + ADAPTER_MODULAR, "adapter.eds")
     module = edsconv.parse(module_body + MODULE_MODULAR, "module.eds")
@@ -198,13 +202,28 @@ def test_module_member_list_in_place_of_the_pair_is_no_eds406():
 
 
 def test_module_member_list_alone_and_between_members():
-    result = _merge('[Assembly]\nProxyAssem1 = "a",,,,,,8,Param1,,ModuleMemberList,8,Param2;\n'
+    result = _merge(PARAMS_1_2 + '[Assembly]\nProxyAssem1 = "a",,,,,,8,Param1,,ModuleMemberList,8,Param2;\n'
                     'ProxyAssem2 = "b",,,,,,ModuleMemberList;\n',
-                    '[Assembly]\nProxiedAssem1 = "x",,,,,,16,,32,"20 04";\nProxiedAssem2 = "y",,,,,,1;\n')
+                    '[Assembly]\nProxiedAssem1 = "x",,,,,,16,,32,"20 04";\nProxiedAssem2 = "y",,,,,,8;\n')
     assert result.diagnostics == []
     first, second = result.merges[0].sections[0].entries
     assert raws(first)[6:] == ["8", "Param1", "16", None, "32", '"20 04"', "8", "Param2"]
-    assert raws(second)[6:] == ["1", None]
+    assert raws(second)[6:] == ["8", None]
+
+
+def test_merge_refuses_what_lint_calls_an_error_in_the_combined_entry():
+    """Issue 20 item 10: the adapter's own fault, the module's in a field the adapter defers, and a fault of
+    the pair (minimum above maximum once combined) each keep the entry out, with exit 1."""
+    module = '[Params]\nProxiedParam1 = ,,,,,,"a","","",9,,;\n'
+    own = _merge('[Params]\nProxyParam1 = 0,,,0,0xC6,1,"a","","",5,2,2;\n', module)
+    deferred = _merge('[Params]\nProxyParam1 = 0,,,0,0xC6,1,"a","","",Module,20,9;\n',
+                      '[Params]\nProxiedParam1 = ,,,,,,"a","","",0x1FF,,;\n')
+    pair = _merge('[Params]\nProxyParam1 = 0,,,0,0xC6,1,"a","","",Module,2,2;\n', module)
+    for result, code in ((own, "EDS315"), (deferred, "EDS102"), (pair, "EDS315")):
+        assert codes(result) == [code] and result.has_errors
+        assert result.merges[0].sections == [] and result.diagnostics[0].line == 2  # the ProxyParam1 line
+    documented = _merge('[Params]\nProxyParam1 = 0,,,0,0xC6,1,"a","","",0,20,9;\n', module)
+    assert codes(documented) == [] and len(documented.merges[0].sections[0].entries) == 1
 
 
 def test_size_adder_without_proxy_param_is_a_warning():
@@ -238,14 +257,14 @@ def test_size_adder_on_an_empty_value_or_out_of_range():
 
 
 def test_size_adder_keeps_hex_and_reals():
-    result = _merge('[Params]\nProxyParam1 = 0,,,0,0xC7,2,"a","","",0x0001,Module,0;\n'
+    result = _merge('[Params]\nProxyParam1 = 0,,,0,0xC7,2,"a","","",0x0001,Module,0x0020;\n'
                     'ProxyParam2 = 0,,,0,0xCA,4,"b","","",0.5,1.5,1;\n'
-                    'ProxyParamSizeAdder1 = 0x0010,4,4;\nProxyParamSizeAdder2 = 1,1.25,0;\n',
+                    'ProxyParamSizeAdder1 = 0x0010,4,4;\nProxyParamSizeAdder2 = 1,1.25,1;\n',
                     '[Params]\nProxiedParam1 = ,,,,,,"a","","",,100,;\n')
     assert result.diagnostics == []
     first, second = result.merges[0].sections[0].entries
-    assert raws(first)[9:12] == ["0x0011", "104", "4"]
-    assert raws(second)[9:12] == ["1.5", "2.75", "1.0"]
+    assert raws(first)[9:12] == ["0x0011", "104", "0x0024"]
+    assert raws(second)[9:12] == ["1.5", "2.75", "2.0"]
 
 
 def test_module_connection_name_is_an_error():

@@ -25,7 +25,7 @@ from test_properties import FRAGMENTS, SAMPLE, SETTINGS, eds_model
 
 #: more pieces of statements than test_properties' FRAGMENTS: the shapes the fast path tells apart
 PIECES = [*FRAGMENTS, "A = 1;", "B = {1,2};", "$x\n", '"b" "c"', ",,", " = ", "1 2", '"\\u0041"', "\f", "\v",
-          '"a,b"', '"a;b"', "\x1c", "\x85"]
+          '"a,b"', '"a;b"', "\x1c", "\x85", "C\n$ k = 1\n= 2;", "D $=\n\n="]
 
 OWN = sorted(p for p in (REPO / "corpus").rglob("*") if p.suffix.lower() == ".eds")
 REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []

@@ -553,3 +553,11 @@ def test_inline_concatenation(text, expected, codes):
     (field,) = eds.sections[0].entries[0].fields
     assert field.value.text == expected
     assert diagnostics(eds) == codes
+
+
+def test_figure_c11_scaling_draws_a_warning_naming_figure_and_formula_not_an_error():
+    """Issue 20 item 10: C.11 sets the scaling bit with 0 in every scaling field; Figure C.5 divides by the
+    divisor. The figure is no error (only the sections a fragment lacks are): EDS350 names both."""
+    _, found = edsconv.analyse(figure("C11"))
+    assert [d.code for d in found if d.severity is Severity.ERROR and d.code != "EDS201"] == []
+    assert [(d.code, d.line) for d in found if d.code in {"EDS319", "EDS350"}] == [("EDS350", 29)]

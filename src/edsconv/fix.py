@@ -141,7 +141,7 @@ FIXERS: dict[str, Fixer] = {
     "EDS099": _unused_suppression,
     "EDS103": _leading_zeros,
     "EDS207": _null_string,
-    "EDS222": _section_case,
+    "EDS228": _section_case,
 }
 
 

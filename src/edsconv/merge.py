@@ -48,7 +48,7 @@ C.15 has one) and the combined ``Param1`` share a number.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from edsconv import spec_tables as tables
 from edsconv.checks.entity_rules import MODULE_IN_MEMBER, PROXY_CONNECT_NAME_MODULE
@@ -473,6 +473,76 @@ def module_member_list_faults(entry: Entry) -> Iterator[tuple[Field, str]]:
                                f"whole pair; the other field shall be empty, not {partner.raw or 'a group'}"
 
 
+# --- refusing what lint calls an error ---------------------------------------------------
+
+#: combined keyword prefix -> the adapter's keyword prefix it stands for
+_PROXY_OF = {out: proxy for _, proxy, _, out in FAMILIES} | {"Enum": "ProxyEnum"}
+
+
+def _as_proxy(entry: Entry) -> str:
+    prefix, number = tables.split_numbered(entry.keyword)
+    return f"{_PROXY_OF[prefix]}{number}"
+
+
+def _in_place(adapter: EdsFile, sections: list[Section]) -> EdsFile:
+    """The adapter with each Proxy entry holding the fields of the entry it forms with the module's:
+    the file lint would see if the adapter described the module itself. Keywords stay the adapter's,
+    so references (``ProxyParam1`` in a connection) resolve as they do there."""
+    combined = {_as_proxy(entry): entry for section in sections for entry in section.entries}
+    rebuilt = []
+    for section in adapter.sections:
+        entries = [Entry(entry.keyword, combined.pop(entry.keyword).fields) if entry.keyword in combined else entry
+                   for entry in section.entries]
+        if section.name == "Params":
+            entries += [Entry(keyword, entry.fields) for keyword, entry in combined.items()
+                        if keyword.startswith("ProxyEnum")]
+        rebuilt.append(Section(section.name, entries))
+    return EdsFile(sections=rebuilt)
+
+
+def _faults_in_combined(adapter: EdsFile, sections: list[Section]) -> dict[str, list[Diagnostic]]:
+    """Adapter keyword -> the errors lint reports in the entry it forms with the module: the adapter's own
+    faults in fields it gives, the module's in fields it defers (Module), and those of the pair (a size
+    against its format, minimum against maximum), which neither file shows alone (C.4.1.5.3)."""
+    from edsconv import analyse, parse
+    from edsconv.eds.writer import write
+
+    combined = {_as_proxy(entry) for section in sections for entry in section.entries}
+    text_file = parse(write(_in_place(adapter, sections)))
+    spans = [(entry.line, entry.source.position(entry.end_offset)[0] if entry.source else entry.line, entry.keyword)
+             for section in text_file.sections for entry in section.entries if entry.keyword in combined]
+    faults: dict[str, list[Diagnostic]] = {}
+    for found in analyse(text_file)[1]:
+        if found.severity is Severity.ERROR:
+            for first, last, keyword in spans:
+                if first <= found.line <= last:
+                    faults.setdefault(keyword, []).append(found)
+    return faults
+
+
+def _refuse_faulty(adapter: EdsFile, module: EdsFile, sections: list[Section], report: _Reporter) -> list[Section]:
+    """``sections`` without the combined entries lint reports an error in; each error reported at the
+    adapter's Proxy entry, naming the module. Merge refuses what lint would refuse."""
+    if not sections:
+        return sections
+    faults = _faults_in_combined(adapter, sections)
+    proxies = _numbered(adapter)
+    kept = []
+    for section in sections:
+        entries = [entry for entry in section.entries if _as_proxy(entry) not in faults]
+        if entries:
+            kept.append(Section(section.name, entries, leading_comments=section.leading_comments))
+    for keyword, found in faults.items():
+        prefix, number = tables.split_numbered(keyword)
+        where = proxies.get((prefix, number or 0))
+        for diagnostic in found:
+            message = f"{diagnostic.message} (in {keyword} as combined with {_name(module)}; left out)"
+            report.diagnostics.append(replace(diagnostic, message=message, path=adapter.path,
+                                              line=where.line if where else 0, column=where.column if where else 0,
+                                              end_line=None, end_column=None))
+    return kept
+
+
 def merge(adapter: EdsFile, modules: list[EdsFile]) -> MergeResult:
     """Combine the adapter's Proxy entries with those of each module whose Rack entries match.
 
@@ -492,7 +562,7 @@ def merge(adapter: EdsFile, modules: list[EdsFile]) -> MergeResult:
                 report(NO_MATCHING_RACK, f"{_name(module)} ({module_racks}) has no Rack entry whose vendor, product "
                        f"type, product code and major revision match a Rack entry of {_name(adapter)}", module)
                 continue
-            sections = _Merger(adapter, module, report).merge()
+            sections = _refuse_faulty(adapter, module, _Merger(adapter, module, report).merge(), report)
             if sections:
                 pairs = ", ".join(f"{a} = {m}" for a, m in racks)
                 sections[0].leading_comments = [Comment(f" edsconv merge: {_name(adapter)} + {_name(module)} "

@@ -60,7 +60,7 @@ def check(*rules: Rule) -> Callable[[CheckFunction], Check]:
 
 #: Every module that defines checks: :func:`load_checks` collects their module-level :class:`Check` objects.
 CHECK_MODULES = ("edsconv.checks.entities", "edsconv.checks.addressing", "edsconv.checks.structure",
-                 "edsconv.checks.objects")
+                 "edsconv.checks.objects", "edsconv.checks.coherence")
 
 
 @functools.cache

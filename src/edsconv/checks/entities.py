@@ -10,11 +10,12 @@ reported again here.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
-from typing import TypeGuard
+from collections.abc import Iterable, Iterator
+from typing import TypeGuard, TypeVar
 
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check
+from edsconv.checks.coherence_rules import SCALING_ALL_ZERO
 from edsconv.checks.entity_rules import (
     ASSEMBLY_CYCLE,
     ASSEMBLY_NOT_WHOLE_BYTES,
@@ -76,12 +77,22 @@ from edsconv.model.device import field_written as _written
 from edsconv.model.device import is_integer as _is_int
 from edsconv.model.values import PathItem
 
+_E = TypeVar("_E", Parameter, Assembly, Connection)
+
 
 def _node(entry: Entry | None, index: int):
     """Field ``index`` of ``entry`` for positions, else the entry itself (or None)."""
     if entry is not None and 0 <= index < len(entry.fields):
         return entry.fields[index]
     return entry
+
+
+def _own(entities: Iterable[_E]) -> Iterator[_E]:
+    """The entities whose fields are all used as written: not the Proxied entries of a module's file, whose
+    fields count only where the adapter's Proxy entry says Module (C.4.1.5.3) and are documentation
+    elsewhere. Rules that relate fields of one entry to each other (sizes against formats, minimum
+    against maximum, Size against members) apply to the entry the pair forms: ``edsconv merge`` checks it."""
+    return (entity for entity in entities if not entity.family.startswith("Proxied"))
 
 
 def _is_number(value: object) -> TypeGuard[int | float]:
@@ -118,11 +129,13 @@ def undefined_references(ctx: Context) -> Iterator[Diagnostic]:
     instances, and C.4.1.4.6 lets an instance go without a ParamN entry."""
     group_members = {id(member) for group in ctx.device.groups for member in group.members}
     for ref in iter_references(ctx.device):
+        if ref.entry is not None and ref.entry.keyword.startswith("Proxied"):
+            continue  # names an entry of the pair, maybe the adapter's: merge checks it (see _own)
         if ref.target is None and id(ref) not in group_members:
             where = ref.entry.keyword if ref.entry is not None else "a reference"
             yield ctx.at(UNDEFINED_REFERENCE, f"{where} names {ref.keyword}, which is not defined",
                          _node(ref.entry, ref.field_index), clause=_reference_clause(ref))
-    for connection in ctx.device.connections.values():
+    for connection in _own(ctx.device.connections.values()):
         for item in _path_references(connection):
             if ctx.device.resolve(item.reference or "") is None:
                 yield ctx.at(UNDEFINED_REFERENCE, f"{connection.keyword}: the path names [{item.reference}], "
@@ -145,7 +158,7 @@ def _connection_value_fields(connection: Connection) -> Iterator[tuple[str, int,
 
 @check(WRONG_PARAMETER_TYPE)
 def connection_parameter_types(ctx: Context) -> Iterator[Diagnostic]:
-    for connection in ctx.device.connections.values():
+    for connection in _own(ctx.device.connections.values()):
         for name, index, value, allowed in _connection_value_fields(connection):
             if isinstance(value, Reference) and isinstance(value.target, Parameter):
                 data_type = value.target.data_type
@@ -304,7 +317,7 @@ def _real_time_format(connection: Connection, direction: str) -> int | None:
 
 @check(SIZE_WITHOUT_FORMAT, SIZE_FORMAT_MISMATCH)
 def connection_sizes_and_formats(ctx: Context) -> Iterator[Diagnostic]:
-    for connection in ctx.device.connections.values():
+    for connection in _own(ctx.device.connections.values()):
         entry = connection.entry
         for name, size_index, attribute in _DIRECTIONS:
             endpoint: ConnectionEndpoint = getattr(connection, attribute)
@@ -373,7 +386,7 @@ def _bounds(parameter: Parameter, data_type: tables.DataType) -> tuple[float, fl
 
 @check(VALUE_ORDER)
 def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
-    for parameter in ctx.device.parameters.values():
+    for parameter in _own(ctx.device.parameters.values()):
         data_type = parameter.data_type
         if data_type is None:
             continue
@@ -406,7 +419,7 @@ def _deferred(entry: Entry | None, index: int) -> bool:
 @check(STRING_LENGTHS_MISSING, BIT_STRING_MIN_MAX)
 def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
     """Table C.17: required for strings, not allowed for bit strings."""
-    for parameter in ctx.device.parameters.values():
+    for parameter in _own(ctx.device.parameters.values()):
         if parameter.data_type is None or parameter.entry is None:
             continue
         entry = parameter.entry
@@ -425,10 +438,10 @@ def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
                              f"{' or '.join(given)}", _node(entry, 9 if "minimum" in given else 10))
 
 
-@check(SCALING_ON_NON_NUMERIC, SCALING_ZERO)
+@check(SCALING_ON_NON_NUMERIC, SCALING_ZERO, SCALING_ALL_ZERO)
 def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
     scaling_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports scaling")
-    for parameter in ctx.device.parameters.values():
+    for parameter in _own(ctx.device.parameters.values()):
         entry, data_type = parameter.entry, parameter.data_type
         if data_type is None or entry is None:
             continue
@@ -442,7 +455,12 @@ def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not _is_int(parameter.descriptor) or not scaling_bit.extract(parameter.descriptor):
             continue  # Figure C.8 writes 0s for scaling that is not used
-        if parameter.scaling.divisor == 0 and _is_int(parameter.scaling.divisor):
+        scaling = parameter.scaling
+        if (scaling.multiplier, scaling.divisor, scaling.base, scaling.offset) == (0, 0, 0, 0):
+            yield ctx.at(SCALING_ALL_ZERO, f"{parameter.keyword}: the descriptor says scaling is supported but "
+                         "every scaling field is 0, as Figure C.11 writes it; Figure C.5 divides by the divisor",
+                         _node(entry, 13))
+        elif scaling.divisor == 0 and _is_int(scaling.divisor):
             yield ctx.at(SCALING_ZERO, f"{parameter.keyword}: scaling divisor is 0 but the descriptor says scaling "
                          "is supported; Figure C.5 divides by it", _node(entry, 13))
 
@@ -454,7 +472,7 @@ def _expected_data_size(data_type: tables.DataType) -> int | None:
 
 @check(DATA_SIZE_MISMATCH)
 def parameter_data_sizes(ctx: Context) -> Iterator[Diagnostic]:
-    for parameter in ctx.device.parameters.values():
+    for parameter in _own(ctx.device.parameters.values()):
         data_type, size = parameter.data_type, parameter.data_size
         if data_type is None or not _is_int(size):
             continue
@@ -468,7 +486,7 @@ def parameter_data_sizes(ctx: Context) -> Iterator[Diagnostic]:
 @check(ENUM_WITHOUT_DESCRIPTOR_BIT)
 def enum_descriptor_bits(ctx: Context) -> Iterator[Diagnostic]:
     enum_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports enumerated strings")
-    for parameter in ctx.device.parameters.values():
+    for parameter in _own(ctx.device.parameters.values()):
         if parameter.enum and _is_int(parameter.descriptor) and not enum_bit.extract(parameter.descriptor):
             yield ctx.at(ENUM_WITHOUT_DESCRIPTOR_BIT, f"{parameter.keyword} has an enumeration but descriptor "
                          f"0x{parameter.descriptor:04X} does not set bit 1", _node(parameter.entry, 3))
@@ -495,7 +513,8 @@ def assembly_members(ctx: Context) -> Iterator[Diagnostic]:
                              "use ModuleMemberList in place of the pair", _node(entry, reference_index))
             bits = ctx.device.member_bits(assembly, member)
             total = total + bits if total is not None and bits is not None else None
-        if total is None or assembly.module_member_list or not assembly.members:
+        if total is None or assembly.module_member_list or not assembly.members \
+                or assembly.family.startswith("Proxied"):  # the pair's, see _own
             continue
         if _is_int(assembly.size):
             if assembly.size * 8 != total:

@@ -29,6 +29,9 @@ UNDEFINED_REFERENCE = rule(
         numbers (Table C.19), and C.4.1.4.6 says "it is not required that ALL parameter
         object instances have a corresponding ParamN entry", so a group may list an
         instance the EDS does not describe.
+        A reference in a ProxiedParam, ProxiedAssem or ProxiedConnect is not checked in
+        the module's file alone: it names an entry of the pair, which may be the
+        adapter's (C.4.1.5.3); `edsconv merge` checks it in the entry the pair forms.
     """,
     bad=block("""
         Assem100 = "In", "", 4,,,, 32, Param9;   $ no Param9 in [Params]
@@ -47,6 +50,9 @@ WRONG_PARAMETER_TYPE = rule(
         type the field evaluates to. A connection's RPI shall evaluate to a UDINT, a
         size to a UINT (C.4.1.4.9.4 - .10), a parameter inside the path to a USINT, UINT
         or UDINT (C.4.1.4.9.13). The referenced ParamN has another data type.
+        A ProxiedConnect entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param2 = 0,,,0x0000,0xC6,1,"Filter","ms","",0,255,3;   $ USINT
@@ -185,6 +191,9 @@ SIZE_WITHOUT_FORMAT = rule(
         nothing gives the size. Not reported for a direction whose real time format is 5
         (CIP Safety, see EDS337): safety connections take their sizes from the safety
         parameters.
+        A ProxiedConnect entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Connection1 = 0x04010002, 0x44640405, Param1,,, Param1,4,Assem100, ...
@@ -200,6 +209,9 @@ SIZE_FORMAT_MISMATCH = rule(
         The size field and the size of the format assembly (its Size field) differ. A
         warning: the text lets the size include a run/idle header, but every real file
         gives the assembly's size.
+        A ProxiedConnect entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Connection1 = 0x04010002, 0x44640405, Param1,8,Assem100, ...   $ Assem100 is 4 bytes
@@ -254,6 +266,9 @@ VALUE_ORDER = rule(
         EPATH, minimum length <= maximum length. A default of QUIET-NAN or SIGNAL-NAN
         is not a number to compare and is not reported. A default outside the data
         type's range is EDS102.
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param2 = 0,,,0x0000,0xC6,1,"Filter","ms","",10,5,7;
@@ -269,6 +284,9 @@ STRING_LENGTHS_MISSING = rule(
     explanation="""
         STRING, STRING2, STRINGN and SHORT_STRING parameters shall give the minimum and
         maximum string length in fields 10 and 11 (Table C.17: required).
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param3 = 0,,,0x0000,0xD0,1,"Name","","",,,"abc";
@@ -287,6 +305,9 @@ BIT_STRING_MIN_MAX = rule(
         not be specified (Table C.17). A warning, not an error: 11 of the 61 real files
         (193 parameters, Murrelektronik's product files among them) give them, and tools
         ignore them.
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param3 = 0,,,0x0000,0xD2,2,"Word","","",0,0xFFFF,0;
@@ -305,6 +326,9 @@ SCALING_ON_NON_NUMERIC = rule(
         ULINT, REAL and LREAL; giving them for other types is prohibited (Table C.18). A
         warning, not an error: Rockwell's own EDS of the E1 Plus module
         (00010003012C0100.eds) gives them for 21 parameters, and tools ignore them.
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param3 = 0,,,0x0000,0xD2,2,"Word","","",,,0,1,1,1,0;
@@ -323,6 +347,9 @@ SCALING_ZERO = rule(
         0 is not reported: the formula multiplies by them, no clause forbids 0, and
         Figure C.11 itself sets the scaling bit with 0 in every scaling field. Zeros with
         bit 2 clear are how Figure C.8 writes "not used".
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param2 = 0,,,0x0004,0xC6,1,"Filter","ms","",0,255,3,1,0,1,0;
@@ -338,6 +365,9 @@ DATA_SIZE_MISMATCH = rule(
         The Data Size is the data type's size in bytes, or bytes per character / path
         entry: 1 for STRING, SHORT_STRING and EPATH, 2 for STRING2, any N for STRINGN
         (Table C.14).
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param2 = 0,,,0x0000,0xC6,2,"Filter","ms","",0,255,3;   $ USINT is 1 byte
@@ -355,6 +385,9 @@ ENUM_WITHOUT_DESCRIPTOR_BIT = rule(
         enumerated strings). A parameter with an EnumN whose descriptor leaves bit 1
         (supports enumerated strings, Table C.15) clear: tools that follow the
         descriptor do not offer the enumeration. Information only; very common in real files.
+        A ProxiedParam entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Param2 = 0,,,0x0000,0xC6,1,"Mode","","",0,1,0;
@@ -402,6 +435,9 @@ ASSEMBLY_SIZE_MISMATCH = rule(
         AssemN's Size, times 8; when a member's size cannot be known (a `Module` value, an
         undefined or newer-edition reference, a path without size) the check is skipped.
         Real files get this wrong by writing member sizes in bytes.
+        A ProxiedAssem entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Assem100 = "In","",4,,,,4,Param1;   $ 4 bits, not 4 bytes
@@ -416,6 +452,9 @@ ASSEMBLY_NOT_WHOLE_BYTES = rule(
     explanation="""
         With no Size field, the members shall still add up to a whole number of bytes
         (C.4.1.4.8).
+        A ProxiedAssem entry alone is not judged by this rule: its fields count only where
+        the adapter's Proxy entry says `Module` and are documentation elsewhere (C.4.1.5.3);
+        `edsconv merge` checks the entry the pair forms.
     """,
     bad=block("""
         Assem101 = "Pad","",,,,,4,;
@@ -449,8 +488,9 @@ ASSEMBLY_CYCLE = rule(
     explanation="""
         An assembly reaches itself through its assembly members (directly or through
         others), so it has no finite size; no tool can import it. EZ-EDS's opaque
-        assembly, whose one member names the assembly itself with its full size, is
-        read as data of that size instead (EDS514).
+        assembly, whose one member names the assembly itself with a Member Size, is
+        read as data of that size instead (EDS514; a Member Size that differs from the
+        assembly's Size is EDS324).
     """,
     bad=block("""
         Assem100 = "In","",4,,,,32,Assem101;

@@ -246,7 +246,8 @@ IO_SIZES_DISAGREE = rule(
     labels=TRIGGERS,
 )
 OPAQUE_ASSEMBLY = rule(
-    "EDS514", INFO, "C.4.1.4.8", "An assembly is opaque data: its one member is the assembly itself, of its full size",
+    "EDS514", INFO, "C.4.1.4.8",
+    "An assembly is opaque data: its one member is the assembly itself, with a size in bits",
     explanation="""
         EZ-EDS writes an assembly whose layout the EDS does not describe as one member that
         names the assembly itself with the assembly's full size in bits
@@ -255,7 +256,10 @@ OPAQUE_ASSEMBLY = rule(
         reads it as opaque data of that size, and so does edsconv: the assembly is `Size`
         bytes of data without members, and this note says so. Issue 10 counts 33 such
         assemblies in one vendor's file (corpus/idioms/opaque_self_assembly.eds imitates
-        it). A member naming its own assembly in any other way is still EDS327.
+        it). The idiom is recognised whatever the member's size: where it differs from
+        `Size` (one real file writes 4096 bits against 496 bytes, 19 times) the fault is
+        that disagreement, reported as EDS324, not a cycle. A member naming its own
+        assembly in any other way (without a Member Size, or one bit of it) is still EDS327.
     """,
     bad=block("""
         Assem1 = "Input", "20 04 24 6F 30 03", 128, 0x0000, ,, 1024, Assem1;

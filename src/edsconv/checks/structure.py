@@ -23,6 +23,8 @@ from collections.abc import Iterator
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
 from edsconv.checks import Context, check, keywords
+from edsconv.checks.coherence import case_variants
+from edsconv.checks.coherence_rules import FORWARD_REFERENCE_IN_SECTION, UNDEFINED_SECTION
 from edsconv.checks.structure_rules import (
     FIELDS_BEYOND_2003,
     FORWARD_REFERENCE,
@@ -168,16 +170,17 @@ def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
                          section)
 
 
-@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
+@check(VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNDEFINED_SECTION)
 def unknown_sections(ctx: Context) -> Iterator[Diagnostic]:
+    variants = case_variants(section.name for section in ctx.eds.sections)  # EDS230 says what they are
     for section in ctx.eds.sections:
         problem = _keyword_problem(section.name)
         if problem is not None:
             yield ctx.at(problem[0], f"section [{section.name}]: {problem[1]}", section)
-        elif cip_tables.known(section.name) is None:
+        elif cip_tables.known(section.name) is None and section.name not in variants:
             meant = keywords.closest(section.name, keywords.section_names())
-            yield ctx.at(UNKNOWN_KEYWORD, f"[{section.name}] {_UNDEFINED}{_did_you_mean(meant and f'[{meant}]')}",
-                         section, clause="C.4.1.2.2.5")
+            yield ctx.at(UNDEFINED_SECTION, f"[{section.name}] {_UNDEFINED}{_did_you_mean(meant and f'[{meant}]')}",
+                         section)
 
 
 #: What EDS222 says of a keyword no table defines.
@@ -208,12 +211,13 @@ def _reference_places(ctx: Context) -> Iterator[tuple[Entry, int, str, Entry]]:
 _CONNECTION_PATH_FIELD = 14
 
 
-@check(FORWARD_REFERENCE)
+@check(FORWARD_REFERENCE, FORWARD_REFERENCE_IN_SECTION)
 def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.2.1: sections may be in any order "provided that no forward references exist".
 
     Reported once per pair of sections, at the first reference that points forward:
-    moving the referenced section up fixes them all.
+    moving the referenced section up fixes them all. A reference forward within one
+    section is a warning (EDS227): Figure C.15 makes one.
     """
     section_of = {id(entry): (index, section) for index, section in enumerate(ctx.eds.sections)
                   for entry in section.entries}
@@ -221,10 +225,17 @@ def forward_references(ctx: Context) -> Iterator[Diagnostic]:
     for entry, field_index, named, target_entry in _reference_places(ctx):
         source = section_of.get(id(entry))
         target = section_of.get(id(target_entry))
-        if source is None or target is None or target[0] <= source[0] or (source[0], target[0]) in reported:
+        if source is None or target is None or target[0] < source[0] or (source[0], target[0]) in reported:
+            continue
+        node = entry.fields[field_index] if field_index < len(entry.fields) else entry
+        if target[0] == source[0]:
+            if target_entry.offset > entry.offset:
+                reported.add((source[0], target[0]))
+                yield ctx.at(FORWARD_REFERENCE_IN_SECTION, f"{entry.keyword} refers to {named}, placed later in "
+                             f"[{source[1].name}] (line {target_entry.line}); C.4.1.2.1 asks for no forward "
+                             "references, Figure C.15 makes this one", node)
             continue
         reported.add((source[0], target[0]))
-        node = entry.fields[field_index] if field_index < len(entry.fields) else entry
         yield ctx.at(FORWARD_REFERENCE, f"{entry.keyword} in [{source[1].name}] refers to {named} "
                                         f"of [{target[1].name}], which comes later (line {target_entry.line}); "
                                         f"place [{target[1].name}] before [{source[1].name}]", node)
@@ -291,11 +302,13 @@ def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     for section in ctx.eds.sections:
         spec = tables.SECTIONS.get(section.name)
         newer = spec is None and cip_tables.section_spec(section.name) is not None
+        variants = case_variants(entry.keyword for entry in section.entries)  # EDS230 says what they are
         for entry in section.entries:
             problem = _keyword_problem(entry.keyword)
             if problem is not None:
                 yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
-            elif (spec is not None or newer) and cip_tables.known(section.name, entry.keyword) is None:
+            elif (spec is not None or newer) and entry.keyword not in variants \
+                    and cip_tables.known(section.name, entry.keyword) is None:
                 if tables.entries_named(entry.keyword) or keywords.newer_entry(section.name, entry.keyword):
                     yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(section.name, entry.keyword)} "
                                                       "(kept)", entry)
@@ -406,7 +419,7 @@ def _choice_fields(spec: tables.EntrySpec, count: int) -> tuple[tuple[int, table
     return tuple(found)
 
 
-@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT, UNKNOWN_KEYWORD)
+@check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT)
 def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
     for entry, spec in _specified_entries(ctx):
@@ -440,8 +453,8 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
         # An open list (vendors may add keywords); the public ones later CIP editions add, such as
         # the Safety classification, are cip_tables.known_choice and not reported
         meant = keywords.closest(word, keywords.classification_keywords())
-        return ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
-                                       f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)
+        return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
+                                    f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)
     vendor = " or a VendorID_keyword" if field_spec.vendor_keywords else ""
     return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {word!r}; allowed: "
                                 f"{allowed}{vendor}", item)

@@ -65,7 +65,8 @@ FORWARD_REFERENCE = rule(
         gives both lines. Reported once per pair of sections: moving the referenced
         section up fixes them all. An error, as the text's "shall": the one real file of
         61 that breaks it is a hand-written library demo, so no tool practice argues
-        for less.
+        for less. A reference to a later entry of the same section is EDS227, a
+        warning: the text's own Figure C.15 makes one.
     """,
     bad=block("""
         [Connection Manager]
@@ -359,28 +360,28 @@ NO_TCP_PORT = rule(
 )
 UNKNOWN_KEYWORD = rule(
     "EDS222", WARNING, "C.4.1.2.2.10",
-    "A keyword that neither ISO 15745-4:2003 nor the newer CIP tables define, and that is not vendor-specific",
-    clause_note="C.4.1.2.2.5 sections, C.4.1.2.2.9 entries, C.4.1.4.4 classifications",
-    fix="safe",
+    "An entry keyword that neither ISO 15745-4:2003 nor the newer CIP tables define, and that is not vendor-specific",
+    clause_note="C.4.1.2.2.9",
     explanation="""
-        A section keyword, entry keyword or classification keyword that no table edsconv
-        holds defines, and that is not vendor-specific (`VendorID_keyword`): not the
-        2003 text's (Table C.3, the entry tables, C.4.1.4.4) and not one that later CIP
-        editions added ([Capacity], `IconContents`, `Safety` ...; `edsconv.cip_tables`).
-        A public keyword "shall always be defined within the CIP specification"
-        (C.4.1.2.2.10), so this is most likely a misspelling: tools ignore the entry or
-        section, and what it says is lost. When a defined keyword is close, the message
-        offers it ("did you mean").
+        An entry keyword that no table edsconv holds defines, and that is not
+        vendor-specific (`VendorID_keyword`): not the 2003 text's (the entry tables)
+        and not one that later CIP editions added (`IconContents`, `AssemExa` ...;
+        `edsconv.cip_tables`). A public keyword "shall always be defined within the CIP
+        specification" (C.4.1.2.2.10), so this is most likely a misspelling: tools ignore
+        the entry, and what it says is lost. When a defined keyword is close, the message
+        offers it ("did you mean"). Keywords are case-sensitive (EDS230): `catalog` is
+        not `Catalog`.
 
-        A warning, not an error: later CIP editions define keywords edsconv's tables may
-        not hold yet. Keywords the tables hold beyond the 2003 text are not reported (the
-        EDS5xx rules check them); one they define for another section is EDS219
-        (information). The Port Type Name has its own rule (EDS333).
+        A warning, not an error: later CIP editions define entry keywords edsconv's tables
+        may not hold yet. Keywords the tables hold beyond the 2003 text are not reported
+        (the EDS5xx rules check them); one they define for another section is EDS219
+        (information). A section name no table defines is EDS228 and a field keyword
+        outside its list (a classification, `Profibus`) EDS211, both errors since issue
+        20; the Port Type Name has its own rule (EDS333).
     """,
     bad=block("""
         [Device]
                 Catalogue = "PRB-1";            $ did you mean Catalog?
-        [Connection Manger]                     $ did you mean [Connection Manager]?
         [Params]
                 Parameter1 = ...;               $ did you mean Param1?
     """),
@@ -392,8 +393,9 @@ UNKNOWN_KEYWORD = rule(
     aliases={"EDS220": """
         EDS220 was "a section not defined by ISO 15745-4:2003" (information) until issue 10
         phase 2: the sections later CIP editions define are now modelled and checked
-        (EDS5xx), and a section no table defines is EDS222, so configurations that name
-        EDS220 keep working. Selecting or ignoring EDS220 acts on all of EDS222.
+        (EDS5xx), and a section no table defines was EDS222 (EDS228 since issue 20), so
+        configurations that name EDS220 keep working. Selecting or ignoring EDS220 acts
+        on all of EDS222.
     """},
 )
 ICON_NOT_ICO = rule(

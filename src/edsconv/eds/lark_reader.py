@@ -21,7 +21,7 @@ from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
 from edsconv.diagnostics import Rule
-from edsconv.eds.lexicon import grammar_text
+from edsconv.eds.lexicon import entry_keyword, grammar_text
 from edsconv.eds.reader_rules import (
     MISSING_COMMA,
     MISSING_SEMICOLON,
@@ -30,7 +30,7 @@ from edsconv.eds.reader_rules import (
     TOO_MANY_ERRORS,
     UNTERMINATED_STRING,
 )
-from edsconv.eds.runs import scan_run
+from edsconv.eds.runs import comments_in, scan_run
 from edsconv.eds.statements import SyntaxBuilder
 from edsconv.eds.syntax import Entry, Field, Group
 
@@ -98,7 +98,7 @@ class _Callbacks:
         builder = self.builder
         start_token, semicolon = children[0], children[-1]
         start, end = self.start_of(start_token), self.end_of(semicolon)
-        keyword = start_token.value.rstrip(" \t\f\v=")  # ENTRY_START is KEYWORD, blanks and "="
+        keyword = entry_keyword(start_token.value)
         depth = max((child[4] for child in children[1:-1] if isinstance(child, tuple)), default=0)
         if depth > MAX_BRACE_DEPTH:
             builder.report(TOO_DEEP, f"{keyword} nests braces {depth} deep (at most {MAX_BRACE_DEPTH} are read); "
@@ -107,7 +107,9 @@ class _Callbacks:
             return
         flat: list[Field] = []
         fields = self.fields(children[1:-1], self.start_of(semicolon), flat)
-        builder.add_entry(Entry(keyword, fields, offset=start, end_offset=end, source=builder.lines), flat)
+        head = list(comments_in(builder.text, start, start + len(start_token.value), builder.lines)) \
+            if "$" in start_token.value else None  # between the keyword and its "=": before the first field
+        builder.add_entry(Entry(keyword, fields, head, offset=start, end_offset=end, source=builder.lines), flat)
 
     def group(self, children: list) -> tuple[Group, int, int, list, int]:
         open_brace, close_brace = children[0], children[-1]

@@ -132,6 +132,11 @@ def lexicon() -> Lexicon:
     )
 
 
+def entry_keyword(entry_start: str) -> str:
+    """The keyword of an ENTRY_START token: KEYWORD, then blanks, line ends and comments, then "="."""
+    return lexicon().entry_keyword.match(entry_start).group()  # type: ignore[union-attr]  # it starts so
+
+
 @functools.lru_cache(maxsize=8192)
 def scalar_kind(raw: str) -> str:
     """The SCALAR_KINDS name of a scalar spelling, or "" when it is no scalar.

@@ -20,7 +20,7 @@ from itertools import repeat
 from pathlib import Path
 
 from edsconv.diagnostics import Diagnostic
-from edsconv.eds.lexicon import lexicon
+from edsconv.eds.lexicon import entry_keyword, lexicon
 from edsconv.eds.reader_rules import CANOPEN_EDS, NO_SECTIONS, NOT_ASCII
 from edsconv.eds.runs import GAP_CHARACTERS, check_strings, simple_pieces
 from edsconv.eds.source import DecodedSource, LineIndex, decode
@@ -151,7 +151,7 @@ def _read_simple_statements(builder: SyntaxBuilder, position: int) -> int:
                 check_strings(text, run_start, run_end, builder.report)
         if find("$", position, start) != -1:
             builder.take_comments(position, start)
-        keyword = head.group("entry").rstrip(" \t\f\v=")  # ENTRY_START is KEYWORD, blanks and "="
+        keyword = entry_keyword(head.group("entry"))
         builder.add_entry(Entry.unread(keyword, start, end, lines), None)
         position = end
     return position

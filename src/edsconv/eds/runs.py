@@ -178,15 +178,17 @@ def entry_contents(text: str, offset: int, end_offset: int, source: LineIndex,
     ``trailing`` is the comment after its ``;`` on the same line, which the reader saw;
     it belongs to the last field, like every comment after the last field's start.
     """
-    body_start = text.index("=", offset) + 1  # ENTRY_START is KEYWORD, blanks and "="
+    body_start = lexicon().statement_start.match(text, offset).end()  # type: ignore[union-attr]  # read so
+    head = list(comments_in(text, offset, body_start, source))  # between the keyword and its "="
     closer = end_offset - 1
     pieces = simple_pieces(text[body_start:closer])
     if pieces is None:
-        return _scanned_contents(text, body_start, closer, source, trailing)
+        fields, comments = _scanned_contents(text, body_start, closer, source, trailing)
+        return fields, head + comments
     simple = split_fields(pieces, body_start, closer, source)  # no comment inside
     if trailing is not None:
         simple[-1].comments.append(trailing)
-    return simple, []
+    return simple, head
 
 
 def _scanned_contents(text: str, body_start: int, closer: int, source: LineIndex,

@@ -162,6 +162,15 @@ _PARAMETER_SETTERS = tuple((index, bool(attribute.partition(".")[1]), attribute.
                            if attribute and attribute not in _TYPED_BY_DATA_TYPE)
 
 
+def _documentation_null(entry: Entry, field: Field) -> bool:
+    """A Proxied entry's null string ``""`` in a field that is not a string: the field is not described.
+    A Proxied field counts only where the adapter's Proxy entry says Module, and is documentation
+    elsewhere (C.4.1.5.3); Figure C.16 writes ``""`` for the sizes and formats its ProxiedConnect leaves
+    to the adapter, so it is read as an empty field, not as a value of the wrong kind."""
+    value = field.value
+    return entry.keyword.startswith("Proxied") and isinstance(value, String) and value.parts in (('""',),)
+
+
 class _Builder:
     def __init__(self, eds: EdsFile) -> None:
         self.eds = eds
@@ -193,6 +202,8 @@ class _Builder:
         try:
             return self.convert(field.value, type_name, proxy, entry, index)  # type: ignore[arg-type]
         except ValueProblem as problem:
+            if problem.rule is WRONG_KIND and _documentation_null(entry, field):
+                return None
             if not problem.reported:
                 self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field,
                             problem.clause)

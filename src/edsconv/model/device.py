@@ -316,17 +316,17 @@ class Assembly:
 
     @property
     def opaque(self) -> bool:
-        """EZ-EDS's opaque assembly: its one member names the assembly itself with the full size
+        """EZ-EDS's opaque assembly: its one member names the assembly itself with a size in bits
         (``Assem1 = "Input", "20 04 24 6F 30 03", 128, 0x0000, ,, 1024, Assem1;``). Real tools read it
-        as Size bytes of data whose layout the EDS does not give, not as an assembly that contains
-        itself (checks.object_rules EDS514)."""
+        as data whose layout the EDS does not give, not as an assembly that contains itself
+        (checks.object_rules EDS514). The member's size need not equal the Size: where they differ
+        the assembly is still opaque data, and the disagreement is EDS324's, as for any assembly."""
         if len(self.members) != 1:
             return False
         member = self.members[0]
         reference = member.reference
-        full_size = self.size is None or (is_integer(self.size) and 8 * self.size == member.size)
         return isinstance(reference, Reference) and reference.keyword == self.keyword and reference.bit is None \
-            and is_integer(member.size) and full_size
+            and is_integer(member.size)
 
 
 @dataclass(slots=True)

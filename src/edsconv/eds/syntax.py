@@ -146,11 +146,13 @@ class String:
 
     @property
     def text(self) -> str:
-        """The characters the string stands for, escapes translated (Table C.4)."""
-        inner = "".join(part[part.index('"') + 1:-1] for part in self.parts)
-        if "\\" not in inner:
-            return inner
-        return _escapes()[0].sub(_unescape, inner)
+        """The characters the string stands for, escapes translated (Table C.4) in each part before the
+        parts are joined: an escape never spans two parts (``"\\x4" "1"`` is not ``"A"``)."""
+        inners = [part[part.index('"') + 1:-1] for part in self.parts]
+        if not any("\\" in inner for inner in inners):
+            return "".join(inners)
+        pattern = _escapes()[0]
+        return "".join(pattern.sub(_unescape, inner) for inner in inners)
 
 
 @dataclass(slots=True)

@@ -33,6 +33,7 @@ from edsconv.xml.convert import (
     Output,
     conversion_refusals,
     device_from_profiles,
+    eds_text,
     header_for,
     profile_documents,
     wrapper_documents,
@@ -121,9 +122,6 @@ def _write_all(output_dir: Path, outputs: list[Output], force: bool) -> list[Pat
 @click.option("--force", is_flag=True, help="Overwrite an existing output file.")
 def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool) -> int:
     """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS."""
-    from edsconv.eds.from_model import device_to_eds
-    from edsconv.eds.writer import write
-
     missing = [str(p) for p in profiles if not p.is_file()]
     if missing:
         raise CannotRun(f"cannot read: {', '.join(missing)}")
@@ -132,7 +130,11 @@ def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool
     echo_diagnostics(diagnostics, err=True)
     if device is None:
         return EXIT_FINDINGS
-    text = write(device_to_eds(device), newline="\r\n" if output else "\n")
+    try:
+        text = eds_text(device, "\r\n" if output else "\n", str(profiles[0]))
+    except NotConverted as refused:
+        echo_diagnostics(refused.diagnostics, err=True)
+        return EXIT_FINDINGS
     if output is None:
         sys.stdout.write(text)
     else:

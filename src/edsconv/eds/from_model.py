@@ -52,8 +52,9 @@ def needs_unicode(text: str) -> bool:
 def quote(text: str) -> String:
     """An EDS_Char_Array with the Table C.4 escapes: ``\\\\``, ``\\"``, the named control
     escapes, other non-printable or non-ASCII characters as ``\\xnn`` (``\\unnnn``
-    beyond Latin-1, which makes the string ``L"..."``; characters beyond the BMP
-    are written as they are)."""
+    beyond Latin-1, which makes the string ``L"..."``). A character beyond the BMP is
+    two 16-bit characters of the L string (C.4.1.3.3.1), its UTF-16 surrogate pair
+    ``\\uD83D\\uDE00``, which the reader joins again: the text is ASCII (C.4.1.3.2)."""
     unicode = needs_unicode(text)
     out = []
     for char in text:
@@ -67,7 +68,8 @@ def quote(text: str) -> String:
         elif code <= 0xFFFF:
             out.append(f"\\u{code:04X}")
         else:
-            out.append(char)
+            high, low = divmod(code - 0x10000, 0x400)
+            out.append(f"\\u{0xD800 + high:04X}\\u{0xDC00 + low:04X}")
     return String((("L" if unicode else "") + '"' + "".join(out) + '"',))
 
 

@@ -117,6 +117,14 @@ def _escapes() -> tuple[re.Pattern[str], dict[str, str]]:
     return pattern, {sequence[1:]: char for sequence, char in tables.ESCAPE_SEQUENCES.items()}
 
 
+_SURROGATE_PAIR = re.compile("[\ud800-\udbff][\udc00-\udfff]")
+
+
+def _joined_pair(match: re.Match[str]) -> str:
+    high, low = (ord(c) for c in match.group())
+    return chr(0x10000 + ((high - 0xD800) << 10) + (low - 0xDC00))
+
+
 def _unescape(match: re.Match[str]) -> str:
     body = match.group(1)
     if len(body) > 1:
@@ -152,7 +160,9 @@ class String:
         if not any("\\" in inner for inner in inners):
             return "".join(inners)
         pattern = _escapes()[0]
-        return "".join(pattern.sub(_unescape, inner) for inner in inners)
+        text = "".join(pattern.sub(_unescape, inner) for inner in inners)
+        # a character beyond the BMP is two 16-bit characters of an L string, its UTF-16 surrogates
+        return _SURROGATE_PAIR.sub(_joined_pair, text) if self.unicode else text
 
 
 @dataclass(slots=True)

@@ -84,6 +84,20 @@ NOT_CONVERTED = rule(
             MinRev = 2;
     """, "ini"),
 )
+NOT_ASCII = rule(
+    "XML104", Severity.ERROR, "C.4.1.3.2", "xml2eds does not write an EDS holding characters outside ASCII",
+    explanation=r"""
+        An EDS is ASCII (C.4.1.3.2). xml2eds writes every character of a string that
+        is not ASCII as an escape of Table C.4 (`\xnn`, or `\unnnn` in an `L` string,
+        a character beyond the BMP as its two 16-bit UTF-16 characters), so the EDS it
+        writes never draws EDS005. A comment, a section name or a keyword has no
+        escapes: when a profile gives one of them a character outside ASCII (in an
+        `edsconv:Comment` or a vendor section of the profile's `DeviceFunction`),
+        xml2eds writes nothing and names the line the EDS would have had.
+    """,
+    bad='`<edsconv:Comment>Müller</edsconv:Comment>`',
+    good='`<edsconv:Comment>Mueller</edsconv:Comment>`',
+)
 #: The [Device] entries the profile's identity is made of (ProfileIdentification, ProdRevision).
 IDENTITY = (("VendCode", "vendor_code"), ("ProdType", "product_type"), ("ProdCode", "product_code"),
             ("MajRev", "major_revision"), ("MinRev", "minor_revision"))
@@ -201,6 +215,27 @@ def header_for(device: Device, fallback: str, overrides: dict) -> Header:
 
 
 # --- xml2eds -----------------------------------------------------------------------------
+
+_NOT_ASCII = re.compile(r"[^\x00-\x7f]")
+
+
+def eds_text(device: Device, newline: str, path: str | None = None) -> str:
+    """The EDS of ``device`` (canonical form) as text, ASCII only (C.4.1.3.2): strings carry their
+    escapes; :class:`NotConverted` (XML104) when a comment, a name or a keyword holds another character."""
+    from edsconv.eds.from_model import device_to_eds
+    from edsconv.eds.writer import write
+
+    text = write(device_to_eds(device), newline=newline)
+    found = _NOT_ASCII.search(text)
+    if found is None:
+        return text
+    line = text.count("\n", 0, found.start()) + 1
+    column = found.start() - text.rfind("\n", 0, found.start())
+    shown = text[found.start() - column + 1:].split("\n", 1)[0].strip()
+    raise NotConverted([Diagnostic.of(
+        NOT_ASCII, f"not converted: line {line} of the EDS would hold {found.group()!r} (U+{ord(found.group()):04X}) "
+        f"in {shown[:80]!r}, which only a string can escape; an EDS is ASCII", 1, 1, path)])
+
 
 def _handle_values(root: etree._Element) -> tuple[str, dict[str, str]]:
     """The WrapperReference (an NMTOKEN: white space collapsed; FILEINFO by default) and the

@@ -125,15 +125,36 @@ class Output:
 
 # --- eds2xml -----------------------------------------------------------------------------
 
-def conversion_refusals(eds: EdsFile, device: Device) -> list[Diagnostic]:
-    """Why ``eds`` must not be converted (rule XML103): errors of reading, or an identity it does not give."""
-    unread = [d for d in (*eds.diagnostics, *device.diagnostics) if d.severity is Severity.ERROR]
+#: Errors of the reader whose text the model keeps all the same: a string (its value read, or kept
+#: unread); text in a statement the reader could not parse, kept verbatim (Unparsed -> Unreadable).
+_KEPT_STRINGS = frozenset({"EDS003", "EDS004", "EDS016"})
+_KEPT_STATEMENTS = frozenset({"EDS001", "EDS012"})
+
+
+def _lost(eds: EdsFile, diagnostic: Diagnostic) -> bool:
+    """Whether the profiles would lose text of ``eds`` that ``diagnostic`` (an error) is about. A value
+    error (EDS1xx) loses nothing: the value is read, or kept as written (Device.unreadable)."""
+    code = diagnostic.code
+    if code in _KEPT_STRINGS or code.startswith("EDS1"):
+        return False
+    if code in _KEPT_STATEMENTS:
+        return not any(item.line <= diagnostic.line <= item.line + item.text.count("\n")
+                       for section in eds.sections for _, item in section.unparsed)
+    return True
+
+
+def conversion_refusals(eds: EdsFile, device: Device, strict: bool = False) -> list[Diagnostic]:
+    """Why ``eds`` must not be converted (rule XML103): text the profiles would lose (with ``strict``:
+    any error of reading, a value kept unread included), or an identity it does not give."""
+    errors = [d for d in (*eds.diagnostics, *device.diagnostics) if d.severity is Severity.ERROR]
+    unread = errors if strict else [d for d in errors if _lost(eds, d)]
     refusals = []
     if unread:
         first = unread[0]
         refusals.append(Diagnostic.of(
-            NOT_CONVERTED, f"not converted: the profiles would lose what {len(unread)} error(s) could not read "
-            f"(the first: {first.code} at line {first.line})", first.line, first.column, eds.path))
+            NOT_CONVERTED, f"not converted{' (--strict)' if strict else ''}: the profiles would lose what "
+            f"{len(unread)} error(s) could not read (the first: {first.code} at line {first.line})",
+            first.line, first.column, eds.path))
     for section in eds.sections:
         if not is_xml_text(section.name):
             refusals.append(Diagnostic.of(

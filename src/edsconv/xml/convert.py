@@ -52,24 +52,31 @@ NOT_A_PROFILE = rule(
 NOT_CONVERTED = rule(
     "XML103", Severity.ERROR, "C.2.1", "eds2xml does not convert an EDS whose identity or values it cannot read",
     explanation="""
-        eds2xml writes profiles only when they say what the EDS says. It writes
-        nothing (exit 1) when:
+        eds2xml writes profiles only when they say what the EDS says. A value it cannot
+        read (a date 13-11-2008, a BOOL default 255, a word where a string stands) does
+        not stop it: every readable value is stated, the unreadable one is kept with its
+        exact spelling in an `edsconv:Unreadable` of the device profile (the schema's
+        element stays empty or absent where the schema allows it), the reader's error
+        is reported (exit 1), and xml2eds writes the spelling back. So is a statement
+        the reader could not parse (a stray word, an entry whose fields lack commas,
+        EDS001/EDS012): the reader keeps its text, and so do the profiles. eds2xml
+        writes nothing (exit 1) when:
 
-        - the reader reported an error (text that does not follow the EDS syntax,
-          EDS0xx) or a value could not be read (out of range, wrong kind, a bad
-          date ..., EDS1xx): the profiles would lose that text or show a placeholder
-          in place of the value (a 500-digit VendCode would become `0`);
-        - [Device] does not give VendCode, ProdType, ProdCode, MajRev and MinRev: the
-          profile's identity (ProfileIdentification, DeviceIdentity) would be invented;
+        - [Device] does not give a readable VendCode, ProdType, ProdCode, MajRev and
+          MinRev: the profile's identity (ProfileIdentification, DeviceIdentity) would
+          be invented; the message names the missing ones;
+        - an error of reading loses text the model cannot keep (an unterminated string,
+          a duplicated section or entry ...);
         - a section name holds characters XML 1.0 cannot carry (control characters):
           the profiles name sections in attributes;
         - the profile would not be readable by an XML parser with the usual limits
           (edsconv's own reader included): a value or comment longer than 10 MB,
           or a document larger than 64 MiB.
 
-        Errors of the checks (EDS2xx to EDS4xx: a missing reference, sizes that do
-        not add up ...) do not stop the conversion: the values are read, and the
-        profiles carry them as the EDS writes them. Correct the file and convert again.
+        `--strict` refuses any error of reading, as eds2xml did before: for pipelines
+        that want a profile only from a file without errors. Errors of the checks
+        (EDS2xx to EDS4xx: a missing reference, sizes that do not add up ...) never
+        stop the conversion.
     """,
     bad=block("""
         [Device]

@@ -17,13 +17,13 @@ import argparse
 import time
 from pathlib import Path
 
-from generate import DEFAULT_DIR, HEADER, dense_param
 from lxml import etree
 
 import edsconv
 from edsconv.xml.common import Header
 from edsconv.xml.convert import profile_documents
 from edsconv.xml.validate import validate_file
+from generate import DEFAULT_DIR, HEADER, dense_param
 
 
 def invalid_profile(params: int, every: int, directory: Path = DEFAULT_DIR) -> tuple[Path, int]:

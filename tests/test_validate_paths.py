@@ -94,6 +94,7 @@ def test_paths_of_numbered_and_namespaced_siblings(tmp_path):
     path, _, _ = broken_profile(tmp_path, 100)
     tree = etree.parse(str(path))
     paths = validate.ElementPaths()
-    found = [(paths.path(e.elem, e.namespaces), e.path) for e in load_schema("CIP_Device_Profile.xsd").iter_errors(tree)]
+    errors = load_schema("CIP_Device_Profile.xsd").iter_errors(tree)
+    found = [(paths.path(e.elem, e.namespaces), e.path) for e in errors]
     assert [ours for ours, _ in found] == [theirs for _, theirs in found]
     assert found[0][0] == "/ISO15745Profile/ProfileBody/ApplicationProcess/Parameter/Param[100]/ParamDescriptor"

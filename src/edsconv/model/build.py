@@ -198,8 +198,8 @@ class _Builder:
                 self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field,
                             problem.clause)
             if not isinstance(problem, ValueNote):
-                self.device.unreadable.append(
-                    Unreadable(self.section_of[id(entry)], entry.keyword, index, spelling(field.value)))
+                self.device.unreadable.append(Unreadable(self.section_of[id(entry)], entry.keyword, index,
+                                                         spelling(field.value) if field.value is not None else ""))
                 return None
             if problem.rule.severity is Severity.ERROR:
                 self.device.erroneous[(self.section_of[id(entry)], entry.keyword, index)] = problem.rule.code

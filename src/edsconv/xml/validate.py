@@ -9,7 +9,7 @@ message ends with the XPath of the offending element.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, cast
@@ -342,14 +342,15 @@ class ElementPaths:
         self._steps: dict[etree._Element, str] = {}
         self.visited = 0
 
-    def path(self, element: etree._Element | None, namespaces: dict[str, str] | None) -> str | None:
+    def path(self, element: etree._Element | None, namespaces: Mapping[str, str] | None) -> str | None:
         if element is None:
             return None
         steps = []
+        prefixes = dict(namespaces) if namespaces else {}
         node: etree._Element | None = element
         while node is not None:
             parent = node.getparent()
-            steps.append(self._step(node, parent, namespaces or {}))
+            steps.append(self._step(node, parent, prefixes))
             node = parent
         return "/" + "/".join(reversed(steps))
 

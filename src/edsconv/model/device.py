@@ -527,8 +527,9 @@ class Device:
     #: fields whose value breaks a notation rule (an error) but has one reading, which the model
     #: holds: (section, entry keyword, 0-based field index) -> the code of the rule it breaks
     erroneous: dict[tuple[str, str, int], str] = field(default_factory=dict, compare=False, repr=False)
-    #: text without a reading, kept as written (model.build; the XML profiles carry it in edsconv:Unreadable)
-    unreadable: list[Unreadable] = field(default_factory=list)
+    #: text without a reading, kept as written (model.build; the XML profiles carry it in edsconv:Unreadable);
+    #: in file order, which a canonical rewrite changes: edsconv.diff compares it by place, equality not
+    unreadable: list[Unreadable] = field(default_factory=list, compare=False)
     # --- the same content beyond the 2003 text, typed (model.cip, built by model.cip_build.attach from
     # extra_entries and other_sections, which the writers write): derived from those, so not compared
     #: [Capacity]

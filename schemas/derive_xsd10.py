@@ -172,11 +172,26 @@ def at_least_one_of(assertion: etree._Element) -> None:
     complex_type.remove(assertion)
 
 
+def inline_fixed_reference(use: etree._Element) -> None:
+    """Rewrite 4 for one ``<attribute ref=... fixed=...>`` use."""
+    schema = use.getroottree().getroot()
+    name = use.get("ref")
+    declaration = schema.find(f"{Q}attribute[@name='{name}']")
+    if schema.get("targetNamespace") or declaration is None or ":" in name or set(use.attrib) - {"ref", "fixed", "use"}:
+        raise SchemaShapeError(f"line {use.sourceline}: a fixed attribute reference of another shape")
+    local = copy.deepcopy(declaration)
+    local.attrib.update({key: value for key, value in use.attrib.items() if key != "ref"})
+    local.tail = use.tail
+    use.getparent().replace(use, local)
+
+
 def derive(source: Path) -> bytes:
     """The XSD 1.0 rendition of the 1.1 schema ``source``, as bytes."""
     tree = parse_beside(source)
     root = tree.getroot()
     extended = extended_types(root)
+    for use in [a for a in root.iter(Q + "attribute") if a.get("ref") and a.get("fixed") is not None]:
+        inline_fixed_reference(use)
     for assertion in list(root.iter(Q + "assert", Q + "assertion")):
         at_least_one_of(assertion)
     for wild in [w for w in root.iter(Q + "any") if w.get("namespace") == "##any"]:

@@ -31,11 +31,18 @@ def garbage() -> dict[str, bytes]:
         "utf16_without_bom": TEXT.encode("utf-16-le"),
         "random": bytes(generator.randrange(256) for _ in range(200_000)),
         "vendcode_of_500_digits": re.sub(r"VendCode = \d+;", "VendCode = " + "9" * 500 + ";", TEXT).encode(),
-        "leading_zeros": TEXT.replace("ProdCode = 1001;", "ProdCode = 01001;").encode(),
         "no_majrev": TEXT.replace("MajRev = 1;", "").encode(),
         "control_character_in_a_section_name": (TEXT + "\n[Vendor\x1bSection]\n    65535_Thing = 1;\n").encode(),
-        "syntax_error": TEXT.replace('ProdName = "Example IO Adapter 8DI/8DO";', 'ProdName = "x" "y" ]]];').encode(),
+        "unterminated_string": TEXT.replace('ProdName = "Example IO Adapter 8DI/8DO";', 'ProdName = "x;').encode(),
     }
+
+
+#: errors of reading whose text the profiles keep (issue 20 item 9): converted, refused with --strict
+KEPT = {
+    "leading_zeros": TEXT.replace("ProdCode = 1001;", "ProdCode = 01001;"),
+    "syntax_error": TEXT.replace('ProdName = "Example IO Adapter 8DI/8DO";', 'ProdName = "x" "y" ]]];'),
+    "date_day_first": TEXT.replace("CreateDate = ", "CreateDate = 13-11-2008; $ was ", 1),
+}
 
 
 def eds2xml(tmp_path: Path, name: str, data: bytes, *options: str):
@@ -59,11 +66,32 @@ def test_the_refusal_says_which_identity_is_missing_and_where() -> None:
     eds = edsconv.parse(TEXT.replace("MajRev = 1;", "").replace("VendCode = 65535;", "VendCode = 70000;"))
     device, _ = edsconv.analyse(eds)
     refusals = conversion_refusals(eds, device)
-    assert [(d.code, d.line) for d in refusals] == [("XML103", 14), ("XML103", 13)]
-    assert refusals[0].message == ("not converted: the profiles would lose what 1 error(s) could not read "
-                                   "(the first: EDS102 at line 14)")
-    assert refusals[1].message == ("not converted: [Device] gives no readable VendCode, MajRev, which the "
-                                   "profiles' identity is made of")
+    assert [(d.code, d.line, d.message) for d in refusals] == [("XML103", 13, (
+        "not converted: [Device] gives no readable VendCode, MajRev, which the profiles' identity is made of"))]
+    strict = conversion_refusals(eds, device, strict=True)
+    assert [(d.code, d.line) for d in strict] == [("XML103", 14), ("XML103", 13)]
+    assert strict[0].message == ("not converted (--strict): the profiles would lose what 1 error(s) could not "
+                                 "read (the first: EDS102 at line 14)")
+
+
+@pytest.mark.parametrize("name", sorted(KEPT))
+def test_errors_whose_text_is_kept_are_converted_and_written_back(tmp_path: Path, name: str) -> None:
+    result, out = eds2xml(tmp_path, name, KEPT[name].encode())
+    assert result.exit_code == 1 and "XML103" not in result.stderr, result.output
+    assert sorted(p.name for p in out.iterdir()) == [f"{name}_commnet.xml", f"{name}_device.xml"]
+    back = CliRunner().invoke(cli, ["xml2eds", str(out / f"{name}_device.xml"), str(out / f"{name}_commnet.xml")])
+    assert back.exit_code == 0, back.output
+    (tmp_path / "back.eds").write_text(back.stdout)
+    same = CliRunner().invoke(cli, ["diff", str(tmp_path / f"{name}.eds"), str(tmp_path / "back.eds")])
+    assert same.exit_code == 0, same.output
+
+
+@pytest.mark.parametrize("name", sorted(KEPT))
+def test_strict_refuses_any_error_of_reading(tmp_path: Path, name: str) -> None:
+    result, out = eds2xml(tmp_path, name, KEPT[name].encode(), "--strict")
+    assert result.exit_code == 1
+    assert "XML103 not converted (--strict)" in result.stderr
+    assert not out.exists()
 
 
 def test_errors_of_the_checks_do_not_stop_the_conversion(tmp_path: Path) -> None:

@@ -151,7 +151,7 @@ def test_real_text_special_words() -> None:
     assert [real_text(v).raw for v in (math.nan, math.inf, -math.inf, 1e-05, 0.5)] == [
         "QUIET-NAN", "INFINITY", "-INFINITY", "1e-05", "0.5"]
     # too many digits for the decimal notation: the scientific one
-    assert real_text(1234567890123456.0).raw == "1.234567890123456e+15"
+    assert real_text(0.1 + 0.2).raw == "3.0000000000000004e-01"
 
 
 _INT_TYPES = [t for t in tables.DATA_TYPES if t.kind in ("unsigned", "signed", "bits") and t.size]
@@ -380,3 +380,28 @@ VendCode = 1;
 def test_a_nan_default_round_trips_on_every_python(name: str):
     """NaN defaults compare equal by ``same`` on 3.13 too, where the dataclass ``__eq__`` says they differ."""
     assert_round_trip(REPO / "corpus" / "allowed" / name)
+
+
+@given(st.floats(allow_nan=False, allow_infinity=False))
+def test_every_double_has_an_lreal_spelling_within_the_limits(value: float) -> None:
+    """C.4.1.3.10 allows every double as an LREAL; its 17 significant digits are within the limit
+    edsconv reads (tables.LREAL_SIGNIFICANT_DIGITS), so to_real reads real_text's spelling without EDS108."""
+    assert to_real(real_text(value, "LREAL"), "LREAL") == value
+
+
+@pytest.mark.parametrize("value", [1.7976931348623157e308, -2.2250738585072014e-308, 0.1 + 0.2, 1 / 3])
+def test_xml2eds_writes_lreal_values_that_lint_accepts(value: float) -> None:
+    """What xml2eds writes (device_to_eds of a model) and what lint reads agree on the LREAL digit limits."""
+    device = Device()
+    device.parameters["Param1"] = Parameter(
+        "Param1", "Param", 1, descriptor=0, data_type=tables.DATA_TYPES_BY_NAME["LREAL"], data_type_code=0xCB,
+        data_size=8, name="X", units="", help="", minimum=-abs(value), maximum=abs(value), default=value)
+    text = write(device_to_eds(device))
+    read, diagnostics = edsconv.analyse(edsconv.parse(text))
+    assert "EDS108" not in {d.code for d in diagnostics}
+    assert read.parameters["Param1"].default == value
+
+
+def test_an_18th_lreal_digit_is_eds108() -> None:
+    text = '[Params]\nParam1 = 0,,,0x0000,0xCB,8,"X","","",0.0,1.79769313486231570e308,0.5;\n'
+    assert "EDS108" in {d.code for d in edsconv.analyse(edsconv.parse(text))[1]}

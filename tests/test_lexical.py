@@ -178,6 +178,24 @@ def test_escapes_of_table_c4(escape, char):
     assert value.text == f"<{char}>"
 
 
+@pytest.mark.parametrize("raw, text", [
+    ('"\\x41" "\\x42"', "AB"),
+    ('"\\\\" "n"', "\\n"),
+    ('"\\\\" "x41"', "\\x41"),
+])
+def test_escapes_are_decoded_in_each_part_before_joining(raw, text):
+    """An escape never spans two parts: a part's text is the text of that part alone (C.4.1.3.3)."""
+    (value,) = values(f"[S]\nK = {raw};\n")
+    assert value.text == text
+    assert value.text == "".join(String((part,)).text for part in value.parts)
+
+
+def test_a_numeric_escape_split_over_two_parts_is_not_joined():
+    eds = edsconv.parse('[S]\nK = "\\x4" "1";\n')
+    assert eds.sections[0].entries[0].fields[0].value.text != "A"
+    assert ("EDS003", 2, 6) in codes(eds)
+
+
 def test_unicode_escape_in_long_string():
     (value,) = values('[S]\nK = L"Pi \\u03C0";\n')
     assert value.text == "Pi \u03c0"

@@ -219,8 +219,9 @@ def test_real_decimal_notation_may_omit_the_point(data_type, digits, sign, data)
 
 
 @pytest.mark.parametrize("data_type", REAL_TYPES, ids=lambda t: t.name)
-def test_real_digits_beyond_16_are_eds108_with_the_value(data_type):
-    assert reading(to_real, "12345678901234567", data_type.name) == ("EDS108", 12345678901234567.0)
+def test_real_digits_beyond_the_limit_are_eds108_with_the_value(data_type):
+    raw = "1234567890123456789"[:data_type.floats.decimal_digits + 1]
+    assert reading(to_real, raw, data_type.name) == ("EDS108", float(raw))
 
 
 @st.composite

@@ -240,7 +240,25 @@ def diff(a: Device, b: Device) -> list[Change]:
     d.keyed(a.extended_assemblies, b.extended_assemblies, "assemblies",
             lambda key, old, new: _assembly(d, key, old, new), lambda x: display(x.name))
     _generic(d, a, b)
+    d.keyed(_unreadable(a), _unreadable(b), "others", lambda key, old, new: d.value(key, old, new, "others"),
+            lambda text: text)
     return d.changes
+
+
+def _unreadable(device: Device) -> dict[str, str]:
+    """The text without a reading (Device.unreadable), by where it stands; compared as written."""
+    found: dict[str, str] = {}
+    for item in device.unreadable:
+        if item.keyword is not None:
+            where = f"[{item.section}] {item.keyword} field {(item.field or 0) + 1} (unreadable)"
+        else:
+            where = f"[{item.section}] text that is no entry" + (f" before {item.before}" if item.before else "")
+        key, count = where, 1
+        while key in found:
+            count += 1
+            key = f"{where} #{count}"
+        found[key] = item.text
+    return found
 
 
 def _parameter(d: _Differ, key: str, old: Parameter, new: Parameter) -> None:

@@ -57,6 +57,15 @@ R, O, C, X = Presence.REQUIRED, Presence.OPTIONAL, Presence.CONDITIONAL, Presenc
 CIP_VOL1 = "CIP Vol1 App. C"
 
 
+#: C.4.1.3.10 conflicts with itself for LREAL: it allows "16" digits in the decimal notation and in the
+#: scientific mantissa, but also every double up to 1.7976e308, and a double needs 17 significant digits
+#: to be written exactly (IEEE 754: DBL_DECIMAL_DIG = 17; the largest, 1.7976931348623157e308, has no
+#: 16-digit spelling below the overflow). Real tools write doubles with 17 significant digits (C's
+#: "%.17g", Python's repr): edsconv reads 17 as the limit for both notations, so that every LREAL value
+#: has a spelling lint accepts and xml2eds writes it (docs/rules.md, EDS108).
+LREAL_SIGNIFICANT_DIGITS = 17
+
+
 @dataclass(frozen=True, slots=True)
 class FloatLimits:
     """EDS notation limits of REAL / LREAL (C.4.1.3.10)."""
@@ -154,7 +163,9 @@ DATA_TYPES: tuple[DataType, ...] = (
              floats=FloatLimits(-16777215, 16777215, 16, 11, 4)),
     DataType(0xCB, "LREAL", 8, "real", "Double floating point format (IEEE 754)",
              -1.7976931348623157e308, 1.7976931348623157e308, source=_F, code_source=CIP_VOL1, obsolete_id=12,
-             floats=FloatLimits(-9007199254740991, 9007199254740991, 16, 16, 4)),
+             # 17 digits, not the text's 16: see LREAL_SIGNIFICANT_DIGITS
+             floats=FloatLimits(-9007199254740991, 9007199254740991, LREAL_SIGNIFICANT_DIGITS,
+                                LREAL_SIGNIFICANT_DIGITS, 4)),
     # Time and date types: the seed names them (Table C.16) but gives no EDS
     # notation; sizes and ranges are those of the CIP integer they are made of.
     DataType(0xCC, "STIME", 4, "time", "Synchronous time information (DINT)",

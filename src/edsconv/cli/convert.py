@@ -33,6 +33,7 @@ from edsconv.xml.convert import (
     Output,
     conversion_refusals,
     device_from_profiles,
+    eds_text,
     header_for,
     profile_documents,
     wrapper_documents,
@@ -47,13 +48,15 @@ from edsconv.xml.convert import (
 @click.option("--reference", type=click.Choice(sorted(WRAPPER_REFERENCES)), default="fileinfo", show_default=True,
               help="What a wrapper's ExternalProfileHandle names (Table C.2).")
 @click.option("--force", is_flag=True, help="Overwrite existing files.")
+@click.option("--strict", is_flag=True,
+              help="Refuse an EDS with any error of reading (XML103), instead of keeping unreadable text as written.")
 @click.option("--profile-id", "identification", help="ProfileIdentification (default: VendCode-ProdType-ProdCode).")
 @click.option("--profile-revision", "revision", help="ProfileRevision (default: [File] Revision).")
 @click.option("--profile-name", "name", help="ProfileName (default: [Device] ProdName).")
 @click.option("--profile-source", "source", help="ProfileSource (default: [Device] VendName).")
 @click.option("--profile-date", "date", type=click.DateTime(["%Y-%m-%d"]),
               help="ProfileDate YYYY-MM-DD (default: [File] ModDate, else CreateDate).")
-def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: str, force: bool,
+def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: str, force: bool, strict: bool,
                     **overrides: Any) -> int:
     """Convert an EDS into ISO 15745-4 XML profiles (device + communication network).
 
@@ -63,9 +66,12 @@ def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: 
       with --wrapper: STEM_device_wrapper.xml and STEM_commnet_wrapper.xml
     Both files or neither: nothing is written when one cannot be.
 
-    An EDS whose text or values cannot all be read (syntax or value errors), or
-    whose [Device] lacks VendCode, ProdType, ProdCode, MajRev or MinRev, is not
-    converted (XML103): the profiles would lose or invent data.
+    A value that cannot be read (a date 13-11-2008, a BOOL 255, a stray word) is
+    kept with its exact spelling in an edsconv:Unreadable of the device profile and
+    reported (exit 1); xml2eds writes it back. An EDS whose [Device] gives no
+    readable VendCode, ProdType, ProdCode, MajRev or MinRev, or with text the
+    profiles cannot keep, is not converted (XML103); --strict refuses any error
+    of reading.
 
     \b
     Exit status:
@@ -83,7 +89,7 @@ def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: 
         overrides["date"] = overrides["date"].date()
     header = header_for(device, eds_file.stem, overrides)
     try:
-        refusals = conversion_refusals(eds, device)
+        refusals = conversion_refusals(eds, device, strict)
         if refusals:
             raise NotConverted(refusals)
         outputs = _documents(eds_file, device, header, WRAPPER_REFERENCES[reference] if wrapper else None)
@@ -121,9 +127,6 @@ def _write_all(output_dir: Path, outputs: list[Output], force: bool, eds_file: P
 @click.option("--force", is_flag=True, help="Overwrite an existing output file.")
 def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool) -> int:
     """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS."""
-    from edsconv.eds.from_model import device_to_eds
-    from edsconv.eds.writer import write
-
     missing = [str(p) for p in profiles if not p.is_file()]
     if missing:
         raise CannotRun(f"cannot read: {', '.join(missing)}")
@@ -132,7 +135,11 @@ def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool
     echo_diagnostics(diagnostics, err=True)
     if device is None:
         return EXIT_FINDINGS
-    text = write(device_to_eds(device), newline="\r\n" if output else "\n")
+    try:
+        text = eds_text(device, "\r\n" if output else "\n", str(profiles[0]))
+    except NotConverted as refused:
+        echo_diagnostics(refused.diagnostics, err=True)
+        return EXIT_FINDINGS
     if output is None:
         sys.stdout.write(text)
     else:

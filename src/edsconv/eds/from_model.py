@@ -17,7 +17,7 @@ from typing import Any
 from edsconv import spec_tables as tables
 from edsconv.eds.canonical import section_rank
 from edsconv.eds.lexicon import scalar_kind
-from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String
+from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, Unparsed
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -30,6 +30,7 @@ from edsconv.model import (
     GenericEntry,
     Parameter,
     Reference,
+    Unreadable,
     parameter_field,
     parameter_field_type,
 )
@@ -52,8 +53,9 @@ def needs_unicode(text: str) -> bool:
 def quote(text: str) -> String:
     """An EDS_Char_Array with the Table C.4 escapes: ``\\\\``, ``\\"``, the named control
     escapes, other non-printable or non-ASCII characters as ``\\xnn`` (``\\unnnn``
-    beyond Latin-1, which makes the string ``L"..."``; characters beyond the BMP
-    are written as they are)."""
+    beyond Latin-1, which makes the string ``L"..."``). A character beyond the BMP is
+    two 16-bit characters of the L string (C.4.1.3.3.1), its UTF-16 surrogate pair
+    ``\\uD83D\\uDE00``, which the reader joins again: the text is ASCII (C.4.1.3.2)."""
     unicode = needs_unicode(text)
     out = []
     for char in text:
@@ -67,7 +69,8 @@ def quote(text: str) -> String:
         elif code <= 0xFFFF:
             out.append(f"\\u{code:04X}")
         else:
-            out.append(char)
+            high, low = divmod(code - 0x10000, 0x400)
+            out.append(f"\\u{0xD800 + high:04X}\\u{0xDC00 + low:04X}")
     return String((("L" if unicode else "") + '"' + "".join(out) + '"',))
 
 
@@ -359,7 +362,32 @@ def device_to_eds(device: Device) -> EdsFile:
     if any(ord(c) > 0x7F for note in device.comments for c in note.text):
         eds.encoding = "utf-8"
     attach_comments(eds, device.comments)
+    restore_unreadable(eds, device.unreadable)
     return eds
+
+
+def restore_unreadable(eds: EdsFile, unreadable: Iterable[Unreadable]) -> None:
+    """Write back, as spelt, each text the model had no reading for: a field into its entry (made when
+    the model wrote none), a statement before the entry it stood before (docs/mapping.md)."""
+    for item in unreadable:
+        section = eds.section(item.section)
+        if section is None:
+            section = Section(item.section, [])
+            eds.sections.append(section)
+        if item.keyword is None:
+            following = section.entry(item.before) if item.before is not None else None
+            index = section.entries.index(following) if following is not None else len(section.entries)
+            section.unparsed.append((index, Unparsed(item.text, [Comment(text) for text in item.comments])))
+            section.unparsed.sort(key=lambda placed: placed[0])
+            continue
+        entry = section.entry(item.keyword)
+        if entry is None:
+            entry = Entry(item.keyword, [])
+            section.entries.append(entry)
+        index = item.field or 0
+        while len(entry.fields) <= index:
+            entry.fields.append(Field(None))
+        entry.fields[index].value = Scalar(item.text)
 
 
 #: A comment on a field beyond the entry's last is on a trailing empty field the writer dropped: at most

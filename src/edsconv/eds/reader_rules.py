@@ -50,7 +50,9 @@ BAD_ESCAPE = rule(
     "EDS003", Severity.ERROR, "C.4.1.3.3.5", "A string holds an escape sequence not in Table C.4",
     explanation=r"""
         A string holds an escape sequence that Table C.4 does not define, such as `\e`
-        or `\p`. A backslash is written `\\`.
+        or `\p`. A backslash is written `\\`. Each part of a string of several
+        adjacent parts is decoded on its own before the parts are joined: an escape
+        never spans two parts, so `"\x4" "1"` is the undefined escape `\x4`, not `A`.
     """,
     bad=block(r"""
         [File]

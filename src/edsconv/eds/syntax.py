@@ -117,6 +117,14 @@ def _escapes() -> tuple[re.Pattern[str], dict[str, str]]:
     return pattern, {sequence[1:]: char for sequence, char in tables.ESCAPE_SEQUENCES.items()}
 
 
+_SURROGATE_PAIR = re.compile("[\ud800-\udbff][\udc00-\udfff]")
+
+
+def _joined_pair(match: re.Match[str]) -> str:
+    high, low = (ord(c) for c in match.group())
+    return chr(0x10000 + ((high - 0xD800) << 10) + (low - 0xDC00))
+
+
 def _unescape(match: re.Match[str]) -> str:
     body = match.group(1)
     if len(body) > 1:
@@ -146,11 +154,15 @@ class String:
 
     @property
     def text(self) -> str:
-        """The characters the string stands for, escapes translated (Table C.4)."""
-        inner = "".join(part[part.index('"') + 1:-1] for part in self.parts)
-        if "\\" not in inner:
-            return inner
-        return _escapes()[0].sub(_unescape, inner)
+        """The characters the string stands for, escapes translated (Table C.4) in each part before the
+        parts are joined: an escape never spans two parts (``"\\x4" "1"`` is not ``"A"``)."""
+        inners = [part[part.index('"') + 1:-1] for part in self.parts]
+        if not any("\\" in inner for inner in inners):
+            return "".join(inners)
+        pattern = _escapes()[0]
+        text = "".join(pattern.sub(_unescape, inner) for inner in inners)
+        # a character beyond the BMP is two 16-bit characters of an L string, its UTF-16 surrogates
+        return _SURROGATE_PAIR.sub(_joined_pair, text) if self.unicode else text
 
 
 @dataclass(slots=True)

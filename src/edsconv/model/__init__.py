@@ -30,6 +30,7 @@ from edsconv.model.device import (
     Rack,
     Reference,
     Scaling,
+    Unreadable,
     parameter_field,
     parameter_field_type,
 )
@@ -39,5 +40,5 @@ __all__ = [
     "ConnectionEndpoint", "Device", "FileDescription", "GenericEntry", "GenericSection", "Identity",
     "MODULE", "MODULE_MEMBER_LIST", "Modular", "ParamClass", "Parameter", "ParameterGroup", "Port",
     "PARAMETER_FIELD_ATTRIBUTES", "Query", "Rack", "Reference", "SINGLE_ENTRY_ATTRIBUTES", "Scaling",
-    "parameter_field", "parameter_field_type",
+    "Unreadable", "parameter_field", "parameter_field_type",
 ]

@@ -39,6 +39,7 @@ from edsconv.model import (
     Query,
     Rack,
     Reference,
+    Unreadable,
 )
 from edsconv.model.cip_build import attach
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
@@ -208,6 +209,8 @@ class _Builder:
                 self.report(problem.rule, f"{entry.keyword} field {index + 1}: {problem.message}", field,
                             problem.clause)
             if not isinstance(problem, ValueNote):
+                self.device.unreadable.append(Unreadable(self.section_of[id(entry)], entry.keyword, index,
+                                                         spelling(field.value) if field.value is not None else ""))
                 return None
             if problem.rule.severity is Severity.ERROR:
                 self.device.erroneous[(self.section_of[id(entry)], entry.keyword, index)] = problem.rule.code
@@ -272,6 +275,7 @@ class _Builder:
                 else:
                     handler(entry, entry_spec)
         self.collect_comments()
+        self.collect_unparsed()
         self.attach_enums_and_adders()
         attach(self.device)  # the typed view of the content beyond the 2003 text (model.cip)
         for ref in iter_references(self.device):
@@ -297,6 +301,14 @@ class _Builder:
                     if item.value.__class__ is Group:  # comments inside a group go with the group's field
                         notes.extend(CommentNote(section.name, keyword, index, c.text)
                                      for inner in Entry("", item.value.fields).walk_fields() for c in inner.comments)
+
+    def collect_unparsed(self) -> None:
+        """The statements the reader could not parse (:class:`Unreadable`, kept as written)."""
+        for section in self.eds.sections:
+            for index, item in section.unparsed:
+                before = section.entries[index].keyword if index < len(section.entries) else None
+                self.device.unreadable.append(Unreadable(section.name, None, None, item.text, before,
+                                                         tuple(c.text for c in item.comments)))
 
     @staticmethod
     def generic(entry: Entry) -> GenericEntry:
@@ -494,6 +506,13 @@ def iter_references(device: Device) -> Iterator[Reference]:
                     yield value
     if device.modular is not None and isinstance(device.modular.slot_display_rule, Reference):
         yield device.modular.slot_display_rule
+
+
+def spelling(value: Value) -> str:
+    """A field's value as the file writes it (a group's fields joined by commas)."""
+    if isinstance(value, Group):
+        return "{" + ",".join("" if f.value is None else spelling(f.value) for f in value.fields) + "}"
+    return value.raw
 
 
 def build(eds: EdsFile) -> Device:

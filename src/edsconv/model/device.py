@@ -468,6 +468,26 @@ class GenericSection:
     section: Section | None = field(default=None, compare=False, repr=False)
 
 
+@dataclass(frozen=True, slots=True)
+class Unreadable:
+    """Text of the EDS that the model has no reading for, kept with its exact spelling, so that
+    eds2xml can convert the rest and xml2eds can write the text back (docs/mapping.md).
+
+    A field without a reading (a BOOL default 255, a date 13-11-2008, a word where a string
+    stands): ``keyword`` and the 0-based ``field``. A statement that is no entry (stray text, an
+    entry whose fields lack a comma; the reader keeps it as :class:`~edsconv.eds.syntax.Unparsed`):
+    ``keyword`` and ``field`` None, ``before`` the keyword of the entry it stood before (None: at
+    the section's end) and the comments on its last line.
+    """
+
+    section: str
+    keyword: str | None
+    field: int | None
+    text: str
+    before: str | None = None
+    comments: tuple[str, ...] = ()
+
+
 class CommentNote(NamedTuple):
     """A comment of the EDS and where it stood, so that conversions can carry it.
 
@@ -507,6 +527,9 @@ class Device:
     #: fields whose value breaks a notation rule (an error) but has one reading, which the model
     #: holds: (section, entry keyword, 0-based field index) -> the code of the rule it breaks
     erroneous: dict[tuple[str, str, int], str] = field(default_factory=dict, compare=False, repr=False)
+    #: text without a reading, kept as written (model.build; the XML profiles carry it in edsconv:Unreadable);
+    #: in file order, which a canonical rewrite changes: edsconv.diff compares it by place, equality not
+    unreadable: list[Unreadable] = field(default_factory=list, compare=False)
     # --- the same content beyond the 2003 text, typed (model.cip, built by model.cip_build.attach from
     # extra_entries and other_sections, which the writers write): derived from those, so not compared
     #: [Capacity]

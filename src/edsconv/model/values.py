@@ -115,11 +115,19 @@ BAD_REVISION = rule(
 REAL_NOTATION = rule(
     "EDS108", Severity.ERROR, "C.4.1.3.10", "A floating point value breaks the digit limits of the REAL/LREAL notation",
     explanation="""
-        A REAL or LREAL value breaks the digit limits of its notation: 16 digits in
-        decimal notation, whose point may be omitted (so `20000000` is a REAL although
-        the integer notation stops at 16777215); 11 (REAL) or 16 (LREAL) mantissa digits
-        and 4 exponent digits in scientific notation. The number still has one
-        reading, which the typed model holds, marked erroneous.
+        A REAL or LREAL value breaks the digit limits of its notation: 16 digits (REAL)
+        or 17 (LREAL) in decimal notation, whose point may be omitted (so `20000000` is
+        a REAL although the integer notation stops at 16777215); 11 (REAL) or 17
+        (LREAL) mantissa digits and 4 exponent digits in scientific notation. The
+        number still has one reading, which the typed model holds, marked erroneous.
+
+        LREAL: the text conflicts with itself. It allows 16 digits in both notations,
+        and also every double up to 1.7976e308, but a double needs 17 significant
+        digits to be written exactly: the largest, `1.7976931348623157E308`, has no
+        16-digit spelling (`1.797693134862316E308` overflows), and neither has
+        `0.1 + 0.2`. Real tools write doubles with 17 significant digits (C's `%.17g`,
+        IEEE 754's DBL_DECIMAL_DIG); edsconv takes 17 as the LREAL limit, so lint
+        accepts every spelling xml2eds writes, and an 18th digit is the error.
     """,
     bad="`1.23456789012345678` for a REAL.",
     good="`1.234567`",

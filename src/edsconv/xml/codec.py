@@ -44,6 +44,7 @@ from edsconv.model import (
     Rack,
     Reference,
     Scaling,
+    Unreadable,
 )
 from edsconv.model.conforms import conforms, declared_type
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
@@ -90,6 +91,32 @@ def write_comment(parent, note: CommentNote) -> None:
     element = etree.SubElement(parent, EDSCONV + "Comment",
                                {key: xml_text(value) for key, value in attributes.items() if value is not None})
     set_text(element, note.text)
+
+
+def write_unreadable(parent, item: Unreadable) -> None:
+    """One ``edsconv:Unreadable``: where the text stood (``field`` numbered from 1, as the diagnostics
+    number it), its exact spelling in ``edsconv:Text``, a statement's comments in ``edsconv:Comment``."""
+    attributes = {"section": item.section, "keyword": item.keyword, "before": item.before,
+                  "field": None if item.field is None else str(item.field + 1)}
+    element = etree.SubElement(parent, EDSCONV + "Unreadable",
+                               {key: xml_text(value) for key, value in attributes.items() if value is not None})
+    set_text(etree.SubElement(element, EDSCONV + "Text"), item.text)
+    for comment in item.comments:
+        set_text(etree.SubElement(element, EDSCONV + "Comment"), comment)
+
+
+def read_unreadable(element) -> Unreadable:
+    number = element.get("field")
+    field = None if number is None else int(number) - 1
+    if field is not None and field < 0:
+        raise ValueError(f"an unreadable field numbered {number}")
+    if (field is None) != (element.get("keyword") is None):
+        raise ValueError("an unreadable field names its keyword and field, a statement neither")
+    texts = [get_text(child) for child in element if child.tag == EDSCONV + "Text"]
+    if len(texts) != 1:
+        raise ValueError("an Unreadable holds one Text")
+    return Unreadable(element.get("section", ""), element.get("keyword"), field, texts[0], element.get("before"),
+                      tuple(get_text(child) for child in element if child.tag == EDSCONV + "Comment"))
 
 
 def write_entries(parent, entries: list[GenericEntry]) -> None:

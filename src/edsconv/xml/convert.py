@@ -52,24 +52,31 @@ NOT_A_PROFILE = rule(
 NOT_CONVERTED = rule(
     "XML103", Severity.ERROR, "C.2.1", "eds2xml does not convert an EDS whose identity or values it cannot read",
     explanation="""
-        eds2xml writes profiles only when they say what the EDS says. It writes
-        nothing (exit 1) when:
+        eds2xml writes profiles only when they say what the EDS says. A value it cannot
+        read (a date 13-11-2008, a BOOL default 255, a word where a string stands) does
+        not stop it: every readable value is stated, the unreadable one is kept with its
+        exact spelling in an `edsconv:Unreadable` of the device profile (the schema's
+        element stays empty or absent where the schema allows it), the reader's error
+        is reported (exit 1), and xml2eds writes the spelling back. So is a statement
+        the reader could not parse (a stray word, an entry whose fields lack commas,
+        EDS001/EDS012): the reader keeps its text, and so do the profiles. eds2xml
+        writes nothing (exit 1) when:
 
-        - the reader reported an error (text that does not follow the EDS syntax,
-          EDS0xx) or a value could not be read (out of range, wrong kind, a bad
-          date ..., EDS1xx): the profiles would lose that text or show a placeholder
-          in place of the value (a 500-digit VendCode would become `0`);
-        - [Device] does not give VendCode, ProdType, ProdCode, MajRev and MinRev: the
-          profile's identity (ProfileIdentification, DeviceIdentity) would be invented;
+        - [Device] does not give a readable VendCode, ProdType, ProdCode, MajRev and
+          MinRev: the profile's identity (ProfileIdentification, DeviceIdentity) would
+          be invented; the message names the missing ones;
+        - an error of reading loses text the model cannot keep (an unterminated string,
+          a duplicated section or entry ...);
         - a section name holds characters XML 1.0 cannot carry (control characters):
           the profiles name sections in attributes;
         - the profile would not be readable by an XML parser with the usual limits
           (edsconv's own reader included): a value or comment longer than 10 MB,
           or a document larger than 64 MiB.
 
-        Errors of the checks (EDS2xx to EDS4xx: a missing reference, sizes that do
-        not add up ...) do not stop the conversion: the values are read, and the
-        profiles carry them as the EDS writes them. Correct the file and convert again.
+        `--strict` refuses any error of reading, as eds2xml did before: for pipelines
+        that want a profile only from a file without errors. Errors of the checks
+        (EDS2xx to EDS4xx: a missing reference, sizes that do not add up ...) never
+        stop the conversion.
     """,
     bad=block("""
         [Device]
@@ -83,6 +90,20 @@ NOT_CONVERTED = rule(
             MajRev = 1;
             MinRev = 2;
     """, "ini"),
+)
+NOT_ASCII = rule(
+    "XML104", Severity.ERROR, "C.4.1.3.2", "xml2eds does not write an EDS holding characters outside ASCII",
+    explanation=r"""
+        An EDS is ASCII (C.4.1.3.2). xml2eds writes every character of a string that
+        is not ASCII as an escape of Table C.4 (`\xnn`, or `\unnnn` in an `L` string,
+        a character beyond the BMP as its two 16-bit UTF-16 characters), so the EDS it
+        writes never draws EDS005. A comment, a section name or a keyword has no
+        escapes: when a profile gives one of them a character outside ASCII (in an
+        `edsconv:Comment` or a vendor section of the profile's `DeviceFunction`),
+        xml2eds writes nothing and names the line the EDS would have had.
+    """,
+    bad='`<edsconv:Comment>Müller</edsconv:Comment>`',
+    good='`<edsconv:Comment>Mueller</edsconv:Comment>`',
 )
 #: The [Device] entries the profile's identity is made of (ProfileIdentification, ProdRevision).
 IDENTITY = (("VendCode", "vendor_code"), ("ProdType", "product_type"), ("ProdCode", "product_code"),
@@ -111,15 +132,36 @@ class Output:
 
 # --- eds2xml -----------------------------------------------------------------------------
 
-def conversion_refusals(eds: EdsFile, device: Device) -> list[Diagnostic]:
-    """Why ``eds`` must not be converted (rule XML103): errors of reading, or an identity it does not give."""
-    unread = [d for d in (*eds.diagnostics, *device.diagnostics) if d.severity is Severity.ERROR]
+#: Errors of the reader whose text the model keeps all the same: a string (its value read, or kept
+#: unread); text in a statement the reader could not parse, kept verbatim (Unparsed -> Unreadable).
+_KEPT_STRINGS = frozenset({"EDS003", "EDS004", "EDS016"})
+_KEPT_STATEMENTS = frozenset({"EDS001", "EDS012"})
+
+
+def _lost(eds: EdsFile, diagnostic: Diagnostic) -> bool:
+    """Whether the profiles would lose text of ``eds`` that ``diagnostic`` (an error) is about. A value
+    error (EDS1xx) loses nothing: the value is read, or kept as written (Device.unreadable)."""
+    code = diagnostic.code
+    if code in _KEPT_STRINGS or code.startswith("EDS1"):
+        return False
+    if code in _KEPT_STATEMENTS:
+        return not any(item.line <= diagnostic.line <= item.line + item.text.count("\n")
+                       for section in eds.sections for _, item in section.unparsed)
+    return True
+
+
+def conversion_refusals(eds: EdsFile, device: Device, strict: bool = False) -> list[Diagnostic]:
+    """Why ``eds`` must not be converted (rule XML103): text the profiles would lose (with ``strict``:
+    any error of reading, a value kept unread included), or an identity it does not give."""
+    errors = [d for d in (*eds.diagnostics, *device.diagnostics) if d.severity is Severity.ERROR]
+    unread = errors if strict else [d for d in errors if _lost(eds, d)]
     refusals = []
     if unread:
         first = unread[0]
         refusals.append(Diagnostic.of(
-            NOT_CONVERTED, f"not converted: the profiles would lose what {len(unread)} error(s) could not read "
-            f"(the first: {first.code} at line {first.line})", first.line, first.column, eds.path))
+            NOT_CONVERTED, f"not converted{' (--strict)' if strict else ''}: the profiles would lose what "
+            f"{len(unread)} error(s) could not read (the first: {first.code} at line {first.line})",
+            first.line, first.column, eds.path))
     for section in eds.sections:
         if not is_xml_text(section.name):
             refusals.append(Diagnostic.of(
@@ -201,6 +243,27 @@ def header_for(device: Device, fallback: str, overrides: dict) -> Header:
 
 
 # --- xml2eds -----------------------------------------------------------------------------
+
+_NOT_ASCII = re.compile(r"[^\x00-\x7f]")
+
+
+def eds_text(device: Device, newline: str, path: str | None = None) -> str:
+    """The EDS of ``device`` (canonical form) as text, ASCII only (C.4.1.3.2): strings carry their
+    escapes; :class:`NotConverted` (XML104) when a comment, a name or a keyword holds another character."""
+    from edsconv.eds.from_model import device_to_eds
+    from edsconv.eds.writer import write
+
+    text = write(device_to_eds(device), newline=newline)
+    found = _NOT_ASCII.search(text)
+    if found is None:
+        return text
+    line = text.count("\n", 0, found.start()) + 1
+    column = found.start() - text.rfind("\n", 0, found.start())
+    shown = text[found.start() - column + 1:].split("\n", 1)[0].strip()
+    raise NotConverted([Diagnostic.of(
+        NOT_ASCII, f"not converted: line {line} of the EDS would hold {found.group()!r} (U+{ord(found.group()):04X}) "
+        f"in {shown[:80]!r}, which only a string can escape; an EDS is ASCII", 1, 1, path)])
+
 
 def _handle_values(root: etree._Element) -> tuple[str, dict[str, str]]:
     """The WrapperReference (an NMTOKEN: white space collapsed; FILEINFO by default) and the

@@ -41,7 +41,7 @@ from edsconv.model import (
 from edsconv.model.build import iter_references
 from edsconv.model.cip_build import attach
 from edsconv.model.values import PathItem, Revision, StringIMember, path_items
-from edsconv.xml.codec import decode, read_comment, read_entries, reference, set_path
+from edsconv.xml.codec import decode, read_comment, read_entries, read_unreadable, reference, set_path
 from edsconv.xml.common import EDSCONV
 from edsconv.xml.datamodel import collapse, string_value, token, xsd_date, xsd_time
 from edsconv.xml.newer import placed, read_entry_list, read_section
@@ -135,6 +135,8 @@ def _read_extensions(reader: _Reader, body: etree._Element, device: Device) -> N
                     sections.append(section)
                 elif element.tag == EDSCONV + "Comments":
                     comments.extend(read_comment(c) for c in element if c.tag == EDSCONV + "Comment")
+                elif element.tag == EDSCONV + "UnreadableText":
+                    device.unreadable.extend(read_unreadable(u) for u in element if u.tag == EDSCONV + "Unreadable")
                 elif element.tag == EDSCONV + "Values":
                     values.extend(v for v in element if v.tag == EDSCONV + "Value")
             except (ValueError, TypeError, KeyError) as error:

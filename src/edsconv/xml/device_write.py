@@ -35,7 +35,15 @@ from edsconv.model import (
     Reference,
 )
 from edsconv.model.values import PathItem, Revision
-from edsconv.xml.codec import differences, encode, float_text, get_path, write_comment, write_entries
+from edsconv.xml.codec import (
+    differences,
+    encode,
+    float_text,
+    get_path,
+    write_comment,
+    write_entries,
+    write_unreadable,
+)
 from edsconv.xml.common import EDSCONV, NSMAP, Header, header_element, is_xml_text, xml_text
 from edsconv.xml.device_read import (
     ASSEM_TAGS,
@@ -360,3 +368,7 @@ def _write_extensions(function, device: Device) -> None:
         comments = etree.SubElement(function, EDSCONV + "Comments")
         for note in device.comments:
             write_comment(comments, note)
+    if device.unreadable:
+        unreadable = etree.SubElement(function, EDSCONV + "UnreadableText")
+        for item in device.unreadable:
+            write_unreadable(unreadable, item)

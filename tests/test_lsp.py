@@ -69,6 +69,7 @@ async def test_initialize_announces_every_feature(client: LanguageClient):
     assert capabilities.hover_provider and capabilities.definition_provider and capabilities.references_provider
     assert capabilities.rename_provider.prepare_provider
     assert capabilities.document_formatting_provider and capabilities.document_symbol_provider
+    assert capabilities.document_range_formatting_provider
     assert "[" in capabilities.completion_provider.trigger_characters
     assert list(capabilities.code_action_provider.code_action_kinds) == [types.CodeActionKind.QuickFix]
     assert capabilities.text_document_sync.change is types.TextDocumentSyncKind.Incremental
@@ -158,16 +159,66 @@ async def test_rename_rewrites_every_reference_and_refuses_an_existing_name(clie
             text_document=doc(uri), position=types.Position(67, 10), new_name="Param2"))
 
 
-async def test_formatting_gives_the_canonical_layout_and_nothing_for_syntax_errors(client: LanguageClient):
-    uri, _ = await open_document(client, "format", EXAMPLE)
-    options = types.FormattingOptions(tab_size=4, insert_spaces=True)
-    (edit,) = await client.text_document_formatting_async(types.DocumentFormattingParams(
-        text_document=doc(uri), options=options))
-    assert edit.new_text == write_canonical(edsconv.parse(EXAMPLE))
-    assert edit.range == types.Range(types.Position(0, 0), types.Position(EXAMPLE.count("\n"), 0))
+def applied(text: str, edits: list[types.TextEdit]) -> str:
+    """``text`` after the client applies ``edits`` (positions in ASCII text: characters)."""
+    lines = text.splitlines(keepends=True)
+    offset = lambda position: sum(len(line) for line in lines[:position.line]) + position.character  # noqa: E731
+    for edit in sorted(edits, key=lambda e: (e.range.start.line, e.range.start.character), reverse=True):
+        text = text[:offset(edit.range.start)] + edit.new_text + text[offset(edit.range.end):]
+    return text
+
+
+CANONICAL = write_canonical(edsconv.parse(EXAMPLE))
+#: the canonical text with two lines laid out otherwise: a one-line entry and one line of Param2
+UNTIDY = CANONICAL.replace("    ProdCode = 1001;", "        ProdCode =1001 ;").replace(
+    "        0, 255, 3,\n", "        0,255,3,\n")
+FORMATTING = types.FormattingOptions(tab_size=4, insert_spaces=True)
+
+
+async def test_formatting_rewrites_only_the_lines_that_change(client: LanguageClient):
+    uri, _ = await open_document(client, "format", UNTIDY)
+    edits = await client.text_document_formatting_async(types.DocumentFormattingParams(doc(uri), FORMATTING))
+    assert applied(UNTIDY, edits) == CANONICAL
+    lines = UNTIDY.splitlines()
+    changed = [lines.index("        ProdCode =1001 ;"), lines.index("        0,255,3,")]
+    assert [(e.range.start.line, e.range.end.line) for e in edits] == [(line, line + 1) for line in changed]
+
+
+async def test_range_formatting_lays_out_the_entries_in_the_range_in_place(client: LanguageClient):
+    uri, _ = await open_document(client, "format-range", UNTIDY)
+    lines = UNTIDY.splitlines()
+    prod_code = lines.index("        ProdCode =1001 ;")
+    in_device = types.Range(types.Position(prod_code - 1, 0), types.Position(prod_code + 1, 0))
+    (edit,) = await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(uri), in_device, FORMATTING))
+    assert (edit.range.start.line, edit.range.end.line, edit.new_text) == (prod_code, prod_code + 1,
+                                                                            "    ProdCode = 1001;\n")
+    param2 = lines.index("    Param2 =")  # the range covers one line of the entry: the entry is laid out
+    (edit,) = await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(uri), types.Range(types.Position(param2 + 1, 0), types.Position(param2 + 1, 3)), FORMATTING))
+    assert edit.new_text == "        0, 255, 3,\n"
+    # a range over the whole of an untidy file gives every entry its layout; nothing moves
+    whole = types.Range(types.Position(0, 0), types.Position(len(EXAMPLE.splitlines()), 0))
+    edits = await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc((await open_document(client, "format-range-all", EXAMPLE))[0]), whole, FORMATTING))
+    laid_out = applied(EXAMPLE, edits)
+    assert write_canonical(edsconv.parse(laid_out)) == CANONICAL
+    assert "        0, 255, 3,\n" in laid_out and "    ProdCode = 1001;\n" in laid_out
+    keywords = lambda text: [line.split("=")[0].strip() for line in text.splitlines() if " =" in line]  # noqa: E731
+    assert keywords(laid_out) == keywords(EXAMPLE)
+
+
+async def test_formatting_refused_for_a_syntax_error_says_why(client: LanguageClient):
     broken_uri, _ = await open_document(client, "format-broken", EXAMPLE.replace("Revision = 1.1;", "Revision = 1.1"))
+    client.messages.clear()
     assert not await client.text_document_formatting_async(types.DocumentFormattingParams(
-        text_document=doc(broken_uri), options=options))
+        doc(broken_uri), FORMATTING))
+    assert not await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(broken_uri), types.Range(types.Position(0, 0), types.Position(3, 0)), FORMATTING))
+    first, second = client.messages
+    assert first.type is types.MessageType.Warning and first == second
+    assert first.message.startswith("edsconv: not formatted: 1 syntax error(s) leave text that cannot be laid out")
+    assert "EDS002" in first.message
 
 
 async def completion_labels(client: LanguageClient, uri: str, line: int, character: int) -> dict[str, str | None]:

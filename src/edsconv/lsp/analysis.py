@@ -44,11 +44,16 @@ class Analysis:
         return self.lines[line - 1].rstrip("\r\n") if 0 < line <= len(self.lines) else ""
 
 
+def split_lines(text: str) -> tuple[str, ...]:
+    """The lines of ``text`` with their line ends, as LSP counts them."""
+    return tuple(_LINE.findall(text))
+
+
 def analyse(text: str, version: int | None = None, path: str | None = None) -> Analysis:
     """Read and check ``text``; a failure of edsconv itself becomes an EDS000 diagnostic, never an exception."""
     from edsconv.lint import INTERNAL_ERROR
 
-    lines = tuple(_LINE.findall(text))
+    lines = split_lines(text)
     eds = edsconv.parse(text, path)
     try:
         device, diagnostics = edsconv.analyse(eds)

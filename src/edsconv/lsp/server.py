@@ -38,6 +38,13 @@ class EdsLanguageServer(LanguageServer):
         folders = [to_fs_path(folder.uri) or "" for folder in self.workspace.folders.values()]
         return settings_for(to_fs_path(uri), folders)
 
+    def formatting(self, analysis: Analysis, positions: Positions, edits: list[actions.Edit]) -> list[types.TextEdit]:
+        """``edits`` as LSP text edits; when formatting is refused, the reason shown to the user instead."""
+        refusal = actions.format_refusal(analysis)
+        if refusal is not None:
+            self.window_show_message(types.ShowMessageParams(types.MessageType.Warning, refusal))
+        return [types.TextEdit(positions.range(e.line, e.column, e.end_line, e.end_column), e.text) for e in edits]
+
     async def current(self, uri: str) -> tuple[Analysis, Positions]:
         """The analysis of the document's text as it is now, and its position converter."""
         document = self.workspace.get_text_document(uri)
@@ -131,12 +138,17 @@ def _register_editing(server: EdsLanguageServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     async def on_formatting(ls: EdsLanguageServer, params: types.DocumentFormattingParams) -> list[types.TextEdit]:
         analysis, positions = await ls.current(params.text_document.uri)
-        text = actions.formatted(analysis)
-        if text is None or text == analysis.text:
-            return []
-        end = (len(analysis.lines) + 1, 1) if analysis.text.endswith(("\n", "\r")) else \
-            (len(analysis.lines), len(analysis.line_text(len(analysis.lines))) + 1)
-        return [types.TextEdit(positions.range(1, 1, *end), text)]
+        return ls.formatting(analysis, positions, actions.formatting_edits(analysis))
+
+    @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
+    async def on_range_formatting(ls: EdsLanguageServer,
+                                  params: types.DocumentRangeFormattingParams) -> list[types.TextEdit]:
+        analysis, positions = await ls.current(params.text_document.uri)
+        first, _ = positions.from_client(params.range.start)
+        last, column = positions.from_client(params.range.end)
+        if column == 1 and last > first:  # a range ending at a line start leaves that line out
+            last -= 1
+        return ls.formatting(analysis, positions, actions.range_formatting_edits(analysis, first, last))
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import sys
 
 import pytest
@@ -10,6 +11,7 @@ pytest.importorskip("pygls")
 pytest_lsp = pytest.importorskip("pytest_lsp")
 
 from lsprotocol import types  # noqa: E402
+from pygls.exceptions import JsonRpcContentModified, JsonRpcRequestCancelled  # noqa: E402
 from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
 
 import edsconv  # noqa: E402
@@ -313,3 +315,41 @@ async def test_shutdown_ends_the_server():
     await own.shutdown_session()
     assert own._server.returncode == 0
     await own.stop()
+
+
+#: io_adapter.eds with 3,000 more parameters: an analysis long enough for a burst of changes to overtake it
+LARGE = EXAMPLE.replace("[Groups]", "".join(
+    f'        Param{n} = 0,,,0x0000,0xC8,4,"P{n}","","",0,100,1,,,,,,,,,;\n' for n in range(5, 3005)) + "\n[Groups]")
+
+
+async def test_a_burst_of_changes_and_requests_builds_no_backlog(client: LanguageClient):
+    uri, _ = await open_document(client, "burst", LARGE)
+    line = LARGE.splitlines().index("        Param2 =")
+    hovers = []
+    for version in range(2, 12):  # a change and a hover per keystroke, faster than one analysis
+        client.protocol.notify(types.TEXT_DOCUMENT_DID_CHANGE,
+                               replace(uri, version, line + 6, 17, 18, "ABCDEFGHIJ"[version - 2]))
+        hovers.append(asyncio.ensure_future(client.text_document_hover_async(
+            types.HoverParams(doc(uri), types.Position(line, 10)))))
+        await asyncio.sleep(0)  # the request goes out now, before the next change
+    answers = await asyncio.gather(*hovers, return_exceptions=True)
+    superseded = [a for a in answers[:-1] if getattr(a, "code", None) == JsonRpcContentModified.CODE]
+    assert superseded and all(a in superseded or isinstance(a, types.Hover) for a in answers[:-1])
+    assert "**ParamN**" in answers[-1].contents.value  # the last text's request is answered
+    published = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+    assert (published.uri, published.version) == (uri, 11)  # one publication, for the last text
+
+
+async def test_a_cancelled_request_answers_request_cancelled_and_cancels_nothing_shared(client: LanguageClient):
+    uri, _ = await open_document(client, "cancel", LARGE)
+    client.text_document_did_change(replace(uri, 2, 3, 0, 0, " "))
+    cancelled = asyncio.ensure_future(client.protocol.send_request_async(
+        types.TEXT_DOCUMENT_HOVER, types.HoverParams(doc(uri), types.Position(28, 10)), msg_id="x"))
+    await asyncio.sleep(0)  # sent: the server waits for the changed text's analysis
+    client.protocol.notify(types.CANCEL_REQUEST, types.CancelParams(id="x"))
+    with pytest.raises(JsonRpcRequestCancelled):
+        await cancelled
+    after = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(28, 10)))
+    assert after.contents.value.startswith("**ParamN**")
+    published = await asyncio.wait_for(client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS), 30)
+    assert published.version == 2  # the diagnostics of the text the cancelled request waited for

@@ -13,7 +13,7 @@ from pygls.lsp.server import LanguageServer
 
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.eds.locate import value_end
-from edsconv.lsp.analysis import Analyses, Analysis
+from edsconv.lsp.analysis import Analyses, Analysis, Superseded
 from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings
 
@@ -91,7 +91,10 @@ class Publisher:
             return  # closed meanwhile
         document = self._server.workspace.get_text_document(uri)
         text, version = document.source, document.version
-        analysis = await asyncio.shield(self._analyses.of(uri, text, version, document.path))
+        try:
+            analysis = await asyncio.shield(self._analyses.of(uri, text, version, document.path))
+        except Superseded:
+            return  # a newer text's own check publishes
         documents = self._server.workspace.text_documents
         if uri not in documents or documents[uri].source != text:
             return  # changed while it was being checked: the newer text's own check publishes

@@ -3,20 +3,26 @@ small handler per LSP method, each handing over to a feature module.
 
 Every request works on the analysis of the document's current text (started
 in a worker thread, shared with the diagnostics of the same text), so answers
-never lag behind the text the editor shows.
+never lag behind the text the editor shows; hover, completion and navigation
+answer as soon as its models are made, before its checks. A request whose text
+is superseded by a change before its analysis is done gets ContentModified
+(the client asks again, or not); ``$/cancelRequest`` answers RequestCancelled
+and leaves the shared analysis running for the others.
 """
 
 from __future__ import annotations
 
+import asyncio
+import sys
 from importlib import metadata
 
 from lsprotocol import types
-from pygls.exceptions import JsonRpcInvalidRequest
+from pygls.exceptions import JsonRpcContentModified, JsonRpcInvalidRequest
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
 from edsconv.lsp import actions, completion, hover, navigation, symbols
-from edsconv.lsp.analysis import Analyses, Analysis
+from edsconv.lsp.analysis import Analyses, Analysis, Superseded
 from edsconv.lsp.diagnostics import CHANGE_DELAY, Publisher
 from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings, settings_for
@@ -45,15 +51,24 @@ class EdsLanguageServer(LanguageServer):
             self.window_show_message(types.ShowMessageParams(types.MessageType.Warning, refusal))
         return [types.TextEdit(positions.range(e.line, e.column, e.end_line, e.end_column), e.text) for e in edits]
 
-    async def current(self, uri: str) -> tuple[Analysis, Positions]:
-        """The analysis of the document's text as it is now, and its position converter."""
+    async def current(self, uri: str, checked: bool = False) -> tuple[Analysis, Positions]:
+        """The analysis of the document's text as it is now, and its position converter: its models and
+        references, and its diagnostics too when ``checked``."""
         document = self.workspace.get_text_document(uri)
-        analysis = await self.analyses.of(uri, document.source, document.version, document.path)
+        analyses = self.analyses.of if checked else self.analyses.readable
+        try:  # shielded: a cancelled request must not cancel what other requests and the diagnostics share
+            analysis = await asyncio.shield(analyses(uri, document.source, document.version, document.path))
+        except Superseded:
+            raise JsonRpcContentModified(f"{uri} changed before its version {document.version} was read") from None
         return analysis, Positions(self.workspace.position_codec, analysis.lines)
 
 
 def create_server() -> EdsLanguageServer:
     """A server with every feature registered; ``start_io()`` runs it on stdin/stdout."""
+    # The analysis thread holds the interpreter lock between the steps of reading a message, which pygls
+    # does in a thread of its own: hand the lock over every 0.5 ms instead of 5 ms, so that the messages
+    # a long analysis (which they may supersede) is running beside come in when sent.
+    sys.setswitchinterval(0.0005)
     server = EdsLanguageServer()
     _register_documents(server)
     _register_reading(server)
@@ -68,6 +83,7 @@ def _register_documents(server: EdsLanguageServer) -> None:
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: EdsLanguageServer, params: types.DidChangeTextDocumentParams) -> None:
+        ls.analyses.forget(params.text_document.uri)
         ls.publisher.schedule(params.text_document.uri, CHANGE_DELAY)
 
     @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
@@ -153,7 +169,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
     async def on_code_action(ls: EdsLanguageServer, params: types.CodeActionParams) -> list[types.CodeAction]:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, checked=True)
         found = []
         for diagnostic in params.context.diagnostics:
             if diagnostic.source != "edsconv" or not isinstance(diagnostic.code, str):

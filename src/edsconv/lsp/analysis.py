@@ -66,7 +66,7 @@ def _never() -> bool:
 
 def analyse(text: str, version: int | None = None, path: str | None = None, *,
             superseded: Callable[[], bool] = _never,
-            readable: Callable[[Analysis], None] | None = None) -> Analysis:
+            readable: Callable[[Analysis], object] | None = None) -> Analysis:
     """Read and check ``text``; a failure of edsconv itself becomes an EDS000 diagnostic, never an exception.
 
     ``superseded`` is asked between the steps: when it says so, :class:`Superseded` is raised.

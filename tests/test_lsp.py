@@ -353,3 +353,39 @@ async def test_a_cancelled_request_answers_request_cancelled_and_cancels_nothing
     assert after.contents.value.startswith("**ParamN**")
     published = await asyncio.wait_for(client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS), 30)
     assert published.version == 2  # the diagnostics of the text the cancelled request waited for
+
+
+#: io_adapter.eds with a [Capacity] section (newer CIP tables) holding an entry, a blank line and a comment
+NEWER = EXAMPLE.replace("[Port]", "[Capacity]\n        MaxMsgConnections = 6;\n        \n        $ see the notes,\n\n[Port]")
+
+
+async def test_hover_and_completion_know_the_newer_cip_tables_the_linter_uses(client: LanguageClient):
+    uri, diagnostics = await open_document(client, "newer", NEWER)
+    lines = NEWER.splitlines()
+    capacity = lines.index("[Capacity]")
+    section = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(capacity, 3)))
+    assert section.contents.value.startswith("**[Capacity]** Capacity: optional (not in ISO 15745-4:2003; a later "
+                                             "CIP edition, as eds-pie `meta_eds_lib.json: Capacity`")
+    entry = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(capacity + 1, 12)))
+    assert entry.contents.value.startswith("**MaxMsgConnections** (not in ISO 15745-4:2003; a later CIP edition")
+    assert "Maximum explicit connections" in entry.contents.value
+    keywords = await completion_labels(client, uri, capacity + 2, 8)
+    assert {"TSpec1", "ConnOverhead", "MaxIOConnections"} <= set(keywords) and "MaxMsgConnections" not in keywords
+    sections = await completion_labels(client, uri, capacity + 5, 1)  # after the "[" of [Port]
+    assert {"TCP/IP Interface Class", "Ethernet Link Class"} <= set(sections) and "Capacity" not in sections
+
+
+async def test_no_completion_or_hover_in_comments_and_parameters_in_a_path_after_a_bracket(client: LanguageClient):
+    text = NEWER.replace('"20 04 24 97 2C 96 2C 64";', '"20 04 24 97 2C [ 2C 64";')
+    uri, _ = await open_document(client, "comments", text)
+    lines = text.splitlines()
+    comment = lines.index("        $ see the notes,")
+    assert not (await client.text_document_completion_async(types.CompletionParams(
+        doc(uri), types.Position(comment, len(lines[comment]))))).items
+    rpi = lines.index("                Param1,2,Assem150,      $ O=>T RPI, size, format")
+    assert await completion_labels(client, uri, rpi, len(lines[rpi])) == {}  # after the comment's last ','
+    assert await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(rpi, 44))) is None
+    path = next(index for index, line in enumerate(lines) if '2C [ 2C 64"' in line)
+    in_brackets = await completion_labels(client, uri, path, lines[path].index("[") + 1)
+    assert set(in_brackets) == {"Param1", "Param2", "Param3", "Param4"} and in_brackets["Param1"] == "RPI"
+    assert await completion_labels(client, uri, path, lines[path].index("24")) == {}  # elsewhere in the string

@@ -356,7 +356,8 @@ async def test_a_cancelled_request_answers_request_cancelled_and_cancels_nothing
 
 
 #: io_adapter.eds with a [Capacity] section (newer CIP tables) holding an entry, a blank line and a comment
-NEWER = EXAMPLE.replace("[Port]", "[Capacity]\n        MaxMsgConnections = 6;\n        \n        $ see the notes,\n\n[Port]")
+NEWER = EXAMPLE.replace("[Port]", "[Capacity]\n        MaxMsgConnections = 6;\n        \n"
+                                  "        $ see the notes,\n\n[Port]")
 
 
 async def test_hover_and_completion_know_the_newer_cip_tables_the_linter_uses(client: LanguageClient):

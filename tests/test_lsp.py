@@ -11,7 +11,7 @@ pytest.importorskip("pygls")
 pytest_lsp = pytest.importorskip("pytest_lsp")
 
 from lsprotocol import types  # noqa: E402
-from pygls.exceptions import JsonRpcContentModified, JsonRpcRequestCancelled  # noqa: E402
+from pygls.exceptions import JsonRpcContentModified, JsonRpcException, JsonRpcRequestCancelled  # noqa: E402
 from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
 
 import edsconv  # noqa: E402
@@ -156,9 +156,15 @@ async def test_rename_rewrites_every_reference_and_refuses_an_existing_name(clie
         text_document=doc(uri), position=types.Position(67, 10), new_name="Param12"))
     edits = sorted(((e.range.start.line, e.range.start.character), e.new_text) for e in edit.changes[uri])
     assert edits == [((54, 8), "Param12"), ((67, 8), "Enum12"), ((83, 40), "12"), ((109, 18), "Param12")]
-    with pytest.raises(Exception, match="Param2 exists already"):
+    with pytest.raises(JsonRpcException, match="Param2 exists already") as refused:
         await client.text_document_rename_async(types.RenameParams(
             text_document=doc(uri), position=types.Position(67, 10), new_name="Param2"))
+    assert refused.value.code == types.LSPErrorCodes.RequestFailed == -32803
+    connection = EXAMPLE.splitlines().index("        Connection1 =")
+    with pytest.raises(JsonRpcException, match=r"ConnectionN numbers start at 1 and go up by one \(C.4.1.4.9") as gap:
+        await client.text_document_rename_async(types.RenameParams(
+            text_document=doc(uri), position=types.Position(connection, 10), new_name="Connection9"))
+    assert gap.value.code == -32803
 
 
 def applied(text: str, edits: list[types.TextEdit]) -> str:

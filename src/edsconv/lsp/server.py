@@ -17,7 +17,7 @@ import sys
 from importlib import metadata
 
 from lsprotocol import types
-from pygls.exceptions import JsonRpcContentModified, JsonRpcInvalidRequest
+from pygls.exceptions import JsonRpcContentModified, JsonRpcException
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
@@ -28,6 +28,12 @@ from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings, settings_for
 
 NAME = "edsconv"
+
+
+class RequestFailed(JsonRpcException):
+    """LSP's RequestFailed: a valid request the server declines (a refused rename), the reason in the message."""
+
+    CODE = types.LSPErrorCodes.RequestFailed.value
 
 
 class EdsLanguageServer(LanguageServer):
@@ -147,7 +153,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
         try:
             edits = navigation.rename(analysis, *positions.from_client(params.position), params.new_name)
         except navigation.RenameRefused as refusal:
-            raise JsonRpcInvalidRequest(str(refusal)) from None
+            raise RequestFailed(str(refusal)) from None
         return types.WorkspaceEdit(changes={params.text_document.uri: [
             types.TextEdit(positions.range(*span), text) for span, text in edits]})
 

@@ -396,3 +396,55 @@ async def test_no_completion_or_hover_in_comments_and_parameters_in_a_path_after
     in_brackets = await completion_labels(client, uri, path, lines[path].index("[") + 1)
     assert set(in_brackets) == {"Param1", "Param2", "Param3", "Param4"} and in_brackets["Param1"] == "RPI"
     assert await completion_labels(client, uri, path, lines[path].index("24")) == {}  # elsewhere in the string
+
+
+async def test_hover_is_plain_text_for_a_client_that_asks_for_it():
+    own = await SERVER.start()  # eglot without markdown-mode declares plaintext only
+    await own.initialize_session(types.InitializeParams(capabilities=types.ClientCapabilities(
+        text_document=types.TextDocumentClientCapabilities(hover=types.HoverClientCapabilities(
+            content_format=[types.MarkupKind.PlainText])))))
+    uri, _ = await open_document(own, "plain", EXAMPLE)
+    found = await own.text_document_hover_async(types.HoverParams(doc(uri), types.Position(94, 20)))
+    assert found.contents.kind is types.MarkupKind.PlainText
+    assert "Param2 'Input Filter': USINT 0xC6" in found.contents.value
+    assert not any(mark in found.contents.value for mark in ("**", "`", "---"))
+    await own.shutdown_session()
+    await own.stop()
+
+
+async def test_a_changed_configuration_applies_at_once_and_a_broken_one_is_reported(tmp_path):
+    own = await SERVER.start()
+    registrations: list[types.Registration] = []
+
+    @own.feature(types.CLIENT_REGISTER_CAPABILITY)
+    def register(params: types.RegistrationParams) -> None:
+        registrations.extend(params.registrations)
+
+    await own.initialize_session(types.InitializeParams(capabilities=types.ClientCapabilities(
+        workspace=types.WorkspaceClientCapabilities(
+            did_change_watched_files=types.DidChangeWatchedFilesClientCapabilities(dynamic_registration=True)))))
+    uri = (tmp_path / "watched.eds").as_uri()
+    own.text_document_did_open(types.DidOpenTextDocumentParams(
+        types.TextDocumentItem(uri=uri, language_id="eds", version=1, text=BROKEN)))
+    assert [d.code for d in await diagnostics_of(own, uri)] == ["EDS301"]
+    (registration,) = registrations
+    assert registration.method == types.WORKSPACE_DID_CHANGE_WATCHED_FILES
+    assert [w["globPattern"] for w in registration.register_options["watchers"]] == ["**/edsconv.toml",
+                                                                                    "**/pyproject.toml"]
+    config = tmp_path / "edsconv.toml"
+
+    def changed(text: str) -> None:
+        config.write_text(text, encoding="utf-8")
+        own.workspace_did_change_watched_files(types.DidChangeWatchedFilesParams(
+            [types.FileEvent(config.as_uri(), types.FileChangeType.Changed)]))
+
+    changed('ignore = ["EDS301"]\n')
+    assert await diagnostics_of(own, uri) == []  # no edit needed
+    changed('ignore = "EDS301"\n')
+    assert [d.code for d in await diagnostics_of(own, uri)] == ["EDS301"]  # the defaults, and a message why
+    (message,) = own.messages
+    assert message.type is types.MessageType.Warning
+    assert message.message.startswith("edsconv: the configuration cannot be read, the defaults apply:")
+    assert "edsconv.toml" in message.message
+    await own.shutdown_session()
+    await own.stop()

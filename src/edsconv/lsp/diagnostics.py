@@ -71,6 +71,8 @@ class Publisher:
         self._analyses = analyses
         self._settings = settings
         self._pending: dict[str, asyncio.Task] = {}
+        #: the configuration errors already shown (each once, not on every keystroke)
+        self._reported: set[str] = set()
 
     def schedule(self, uri: str, delay: float = 0.0) -> None:
         """Check ``uri`` after ``delay`` seconds; a newer call for the same document replaces this one."""
@@ -100,6 +102,11 @@ class Publisher:
             return  # changed while it was being checked: the newer text's own check publishes
         positions = Positions(self._server.workspace.position_codec, analysis.lines)
         settings = self._settings(uri)
+        if settings.error is not None and settings.error not in self._reported:
+            self._reported.add(settings.error)
+            self._server.window_show_message(types.ShowMessageParams(
+                types.MessageType.Warning, f"edsconv: the configuration cannot be read, the defaults apply: "
+                                           f"{settings.error}"))
         items = [to_lsp(d, analysis, positions) for d in settings.kept(analysis.eds, analysis.diagnostics)]
         self._server.text_document_publish_diagnostics(
             types.PublishDiagnosticsParams(uri=uri, diagnostics=items, version=version))

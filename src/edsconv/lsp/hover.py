@@ -83,6 +83,12 @@ def hover(analysis: Analysis, line: int, column: int) -> tuple[str, Span] | None
     return ("\n\n---\n\n".join(parts), span) if parts and span else None
 
 
+def plain_text(markdown: str) -> str:
+    """The hover text for a client that shows plain text only (eglot without markdown-mode): no
+    emphasis, no code marks, a blank line between the parts instead of a rule."""
+    return markdown.replace("\n\n---\n\n", "\n\n").replace("**", "").replace("`", "")
+
+
 # --- the spec ------------------------------------------------------------------------------
 
 

@@ -82,7 +82,27 @@ def create_server() -> EdsLanguageServer:
     return server
 
 
+#: The configuration files edsconv lint reads (docs/lint.md): a change to one re-checks every open document.
+CONFIGURATION_FILES = ("edsconv.toml", "pyproject.toml")
+
+
 def _register_documents(server: EdsLanguageServer) -> None:
+    @server.feature(types.INITIALIZED)
+    async def on_initialized(ls: EdsLanguageServer, params: types.InitializedParams) -> None:
+        workspace = ls.client_capabilities.workspace
+        watching = workspace and workspace.did_change_watched_files
+        if watching and watching.dynamic_registration:  # else the client cannot tell us: edits and saves re-read
+            watchers = [types.FileSystemWatcher(glob_pattern=f"**/{name}") for name in CONFIGURATION_FILES]
+            await ls.client_register_capability_async(types.RegistrationParams([types.Registration(
+                "edsconv-configuration", types.WORKSPACE_DID_CHANGE_WATCHED_FILES,
+                types.DidChangeWatchedFilesRegistrationOptions(watchers))]))
+
+    @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
+    def did_change_watched_files(ls: EdsLanguageServer, params: types.DidChangeWatchedFilesParams) -> None:
+        if any(change.uri.rsplit("/", 1)[-1] in CONFIGURATION_FILES for change in params.changes):
+            for uri in list(ls.workspace.text_documents):
+                ls.publisher.schedule(uri)
+
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: EdsLanguageServer, params: types.DidOpenTextDocumentParams) -> None:
         ls.publisher.schedule(params.text_document.uri)
@@ -110,6 +130,11 @@ def _register_reading(server: EdsLanguageServer) -> None:
         if found is None:
             return None
         text, span = found
+        hover_capabilities = ls.client_capabilities.text_document and ls.client_capabilities.text_document.hover
+        formats = (hover_capabilities and hover_capabilities.content_format) or [types.MarkupKind.Markdown]
+        if formats[0] is types.MarkupKind.PlainText or types.MarkupKind.Markdown not in formats:
+            return types.Hover(types.MarkupContent(types.MarkupKind.PlainText, hover.plain_text(text)),
+                               positions.range(*span))
         return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, text), positions.range(*span))
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)

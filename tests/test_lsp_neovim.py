@@ -82,3 +82,33 @@ def test_formatting_keeps_the_cursor_on_its_text(tmp_path: Path):
     line, buffer = out.read_text().split("\n", 1)
     assert buffer == canonical
     assert line == '        "Debounce time of the digital inputs",'
+
+
+def documented_config(version: tuple[int, int]) -> str:
+    """The init.lua docs/editors.md gives for this Neovim version (the block after its marker)."""
+    marker = "<!-- neovim>=0.10 -->" if version >= (0, 10) else "<!-- neovim 0.7 -->"
+    text = (REPO / "docs" / "editors.md").read_text(encoding="utf-8")
+    return text.split(marker, 1)[1].split("```lua\n", 1)[1].split("```", 1)[0]
+
+
+def test_the_documented_config_attaches_to_an_eds_file_of_any_case(tmp_path: Path):
+    version_line = subprocess.run([NVIM, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
+    major, minor = (int(part) for part in version_line.split("v", 1)[1].split(".")[:2])
+    init = tmp_path / "init.lua"
+    init.write_text(documented_config((major, minor)), encoding="utf-8")
+    document = tmp_path / "Broken.Eds"  # neither .eds nor .EDS
+    document.write_bytes(BROKEN.read_bytes())
+    out = tmp_path / "out.txt"
+    hover = next(f"{index}:{line.index('[Param2]') + 2}" for index, line in enumerate(BROKEN.read_text().splitlines())
+                 if "[Param2]" in line)
+    environment = {**os.environ, "EDSCONV_NVIM_OUT": str(out), "EDSCONV_NVIM_HOVER": hover,
+                   "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}",
+                   "XDG_CONFIG_HOME": str(tmp_path), "XDG_DATA_HOME": str(tmp_path), "XDG_STATE_HOME": str(tmp_path)}
+    run = subprocess.run([NVIM, "--headless", "-n", "-i", "NONE", "-u", str(init), str(document), "-c",
+                          f"luafile {REPO / 'tests' / 'nvim' / 'docs_config.lua'}"],
+                         env=environment, cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stderr
+    filetype, clients, codes, hover_text = out.read_text().splitlines()
+    assert (filetype, clients) == ("eds", "edsconv")
+    assert sorted(codes.split(",")) == sorted(line.split()[1] for line in expected_lines(BROKEN))
+    assert hover_text == "**Param2** is not defined in this file."

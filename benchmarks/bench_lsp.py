@@ -92,7 +92,8 @@ def one_character_change(uri: str, text: str, version: int) -> types.DidChangeTe
 async def change_latency(client: Client, path: Path, repeat: int) -> dict:
     uri, text, opened = await open_file(client, path)
     document = types.TextDocumentIdentifier(uri)
-    position = reference_positions(text)[0]
+    # a reference, else (a file of parameters only) the keyword of the second line
+    position = next(iter(reference_positions(text)), types.Position(1, 10))
     changes, hovers, completions = [], [], []
     for version in range(2, 2 + 3 * repeat, 3):
         start = time.perf_counter()
@@ -134,7 +135,7 @@ async def request_latency(client: Client, files: list[Path], repeat: int) -> dic
             "definition_median_s": statistics.median(definitions), "definition_max_s": max(definitions)}
 
 
-async def run(corpus: Path, repeat: int, dense: str) -> dict:
+async def run(corpus: Path, repeat: int, dense: str, requests: bool = True) -> dict:
     files = corpus_files(corpus)
     client = Client()
     await client.start_io(sys.executable, "-m", "edsconv", "lsp")
@@ -143,7 +144,7 @@ async def run(corpus: Path, repeat: int, dense: str) -> dict:
     largest = max(files, key=lambda p: p.stat().st_size)
     result = {"change": [await change_latency(client, largest, repeat),
                          await change_latency(client, generate(dense), repeat)],
-              "requests": await request_latency(client, files, repeat)}
+              "requests": await request_latency(client, files, repeat) if requests else None}
     await client.shutdown_async(None)
     client.exit(None)
     await client.stop()
@@ -155,14 +156,17 @@ def options() -> argparse.Namespace:
     parser.add_argument("--repeat", type=int, default=5, help="timings per request; the best counts (default 5)")
     parser.add_argument("--corpus", type=Path, default=CORPUS, help=f"real EDS files (default {CORPUS})")
     parser.add_argument("--dense", default="dense-params-40k.eds", help="the generated dense file (generate.py)")
+    parser.add_argument("--changes-only", action="store_true", help="skip hover and definition on unchanged text")
     parser.add_argument("--json", type=Path, help="also write the numbers to this JSON file")
     return parser.parse_args()
 
 
 def main() -> None:
     arguments = options()
-    result = asyncio.run(run(arguments.corpus, arguments.repeat, arguments.dense))
+    result = asyncio.run(run(arguments.corpus, arguments.repeat, arguments.dense, not arguments.changes_only))
     requests = result["requests"]
+    if arguments.json:
+        arguments.json.write_text(json.dumps(result, indent=2) + "\n")
     print(f"after a one-character change (median of {arguments.repeat}; the {CHANGE_DELAY * 1000:.0f} ms pause "
           "included), beside one full re-check")
     print(f"  {'file':<34} {'bytes':>10} {'diagnostics':>12} {'(max)':>7} {'hover':>7} {'completion':>11} "
@@ -172,13 +176,13 @@ def main() -> None:
         print(f"  {change['file'][-34:]:<34} {change['bytes']:>10,} {ms['change_to_diagnostics_s']:>12} "
               f"{ms['change_to_diagnostics_max_s']:>7} {ms['hover_after_change_s']:>7} "
               f"{ms['completion_after_change_s']:>11} {ms['full_recheck_s']:>14}")
+    if requests is None:
+        return
     print(f"{requests['requests']} references on {requests['files']} files (best of {arguments.repeat} each)")
     print(f"  hover      median {requests['hover_median_s'] * 1000:6.1f} ms, "
           f"max {requests['hover_max_s'] * 1000:6.1f} ms")
     print(f"  definition median {requests['definition_median_s'] * 1000:6.1f} ms, "
           f"max {requests['definition_max_s'] * 1000:6.1f} ms")
-    if arguments.json:
-        arguments.json.write_text(json.dumps(result, indent=2) + "\n")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@
 -- ("format"); write the cursor's line and then the buffer to $EDSCONV_NVIM_OUT and quit.
 -- Uses only what Neovim 0.7 (Debian 12) has, and what later versions still have.
 local out = assert(os.getenv("EDSCONV_NVIM_OUT"), "EDSCONV_NVIM_OUT is not set")
-local python = assert(os.getenv("EDSCONV_PYTHON"), "EDSCONV_PYTHON is not set")
+local attach = dofile(vim.fn.fnamemodify(debug.getinfo(1, "S").source:sub(2), ":h") .. "/attach.lua")
 local action = assert(os.getenv("EDSCONV_NVIM_ACTION"), "EDSCONV_NVIM_ACTION is not set")
 local cursor = tonumber(os.getenv("EDSCONV_NVIM_CURSOR") or "1")
 
@@ -26,21 +26,9 @@ local function format_and_quit()
 end
 
 local formatted = false
-local client = vim.lsp.start_client({
-  name = "edsconv",
-  cmd = { python, "-m", "edsconv", "lsp" },
-  root_dir = vim.fn.getcwd(),
-  handlers = {
-    ["textDocument/publishDiagnostics"] = function()
-      if not formatted then
-        formatted = true
-        vim.schedule(format_and_quit)
-      end
-    end,
-  },
-})
-vim.lsp.buf_attach_client(0, client)
-vim.defer_fn(function()
-  io.stderr:write("no diagnostics within 30 s\n")
-  vim.cmd("cquit 3")
-end, 30000)
+attach(function()
+  if not formatted then
+    formatted = true
+    vim.schedule(format_and_quit)
+  end
+end)

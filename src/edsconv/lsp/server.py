@@ -57,11 +57,11 @@ class EdsLanguageServer(LanguageServer):
             self.window_show_message(types.ShowMessageParams(types.MessageType.Warning, refusal))
         return [types.TextEdit(positions.range(e.line, e.column, e.end_line, e.end_column), e.text) for e in edits]
 
-    async def current(self, uri: str, checked: bool = False) -> tuple[Analysis, Positions]:
-        """The analysis of the document's text as it is now, and its position converter: its models and
-        references, and its diagnostics too when ``checked``."""
+    async def current(self, uri: str, readable: bool = False) -> tuple[Analysis, Positions]:
+        """The analysis of the document's text as it is now, and its position converter; with ``readable``
+        as soon as its models and references are made (its diagnostics may still be empty)."""
         document = self.workspace.get_text_document(uri)
-        analyses = self.analyses.of if checked else self.analyses.readable
+        analyses = self.analyses.readable if readable else self.analyses.of
         try:  # shielded: a cancelled request must not cancel what other requests and the diagnostics share
             analysis = await asyncio.shield(analyses(uri, document.source, document.version, document.path))
         except Superseded:
@@ -125,7 +125,7 @@ def _register_documents(server: EdsLanguageServer) -> None:
 def _register_reading(server: EdsLanguageServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_HOVER)
     async def on_hover(ls: EdsLanguageServer, params: types.HoverParams) -> types.Hover | None:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         found = hover.hover(analysis, *positions.from_client(params.position))
         if found is None:
             return None
@@ -139,25 +139,25 @@ def _register_reading(server: EdsLanguageServer) -> None:
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
     async def on_definition(ls: EdsLanguageServer, params: types.DefinitionParams) -> types.Location | None:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         span = navigation.definition(analysis, *positions.from_client(params.position))
         return None if span is None else types.Location(params.text_document.uri, positions.range(*span))
 
     @server.feature(types.TEXT_DOCUMENT_REFERENCES)
     async def on_references(ls: EdsLanguageServer, params: types.ReferenceParams) -> list[types.Location]:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         spans = navigation.references(analysis, *positions.from_client(params.position),
                                       params.context.include_declaration)
         return [types.Location(params.text_document.uri, positions.range(*span)) for span in spans]
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     async def on_symbols(ls: EdsLanguageServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         return symbols.document_symbols(analysis, positions)
 
     @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=["[", ","]))
     async def on_completion(ls: EdsLanguageServer, params: types.CompletionParams) -> types.CompletionList:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         items = completion.completions(analysis, *positions.from_client(params.position))
         return types.CompletionList(is_incomplete=False, items=items)
 
@@ -166,7 +166,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
     async def on_prepare_rename(ls: EdsLanguageServer,
                                 params: types.PrepareRenameParams) -> types.PrepareRenamePlaceholder | None:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         found = navigation.target_at(analysis, *positions.from_client(params.position))
         if found is None:
             return None
@@ -174,7 +174,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
 
     @server.feature(types.TEXT_DOCUMENT_RENAME)
     async def on_rename(ls: EdsLanguageServer, params: types.RenameParams) -> types.WorkspaceEdit:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         try:
             edits = navigation.rename(analysis, *positions.from_client(params.position), params.new_name)
         except navigation.RenameRefused as refusal:
@@ -184,13 +184,13 @@ def _register_editing(server: EdsLanguageServer) -> None:
 
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     async def on_formatting(ls: EdsLanguageServer, params: types.DocumentFormattingParams) -> list[types.TextEdit]:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         return ls.formatting(analysis, positions, actions.formatting_edits(analysis))
 
     @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
     async def on_range_formatting(ls: EdsLanguageServer,
                                   params: types.DocumentRangeFormattingParams) -> list[types.TextEdit]:
-        analysis, positions = await ls.current(params.text_document.uri)
+        analysis, positions = await ls.current(params.text_document.uri, readable=True)
         first, _ = positions.from_client(params.range.start)
         last, column = positions.from_client(params.range.end)
         if column == 1 and last > first:  # a range ending at a line start leaves that line out
@@ -200,7 +200,7 @@ def _register_editing(server: EdsLanguageServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
     async def on_code_action(ls: EdsLanguageServer, params: types.CodeActionParams) -> list[types.CodeAction]:
-        analysis, positions = await ls.current(params.text_document.uri, checked=True)
+        analysis, positions = await ls.current(params.text_document.uri)
         found = []
         for diagnostic in params.context.diagnostics:
             if diagnostic.source != "edsconv" or not isinstance(diagnostic.code, str):

@@ -28,6 +28,8 @@ from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings, settings_for
 
 NAME = "edsconv"
+#: The configuration files edsconv lint reads (docs/lint.md): a change to one re-checks every open document.
+CONFIGURATION_FILES = ("edsconv.toml", "pyproject.toml")
 
 
 class RequestFailed(JsonRpcException):
@@ -45,10 +47,25 @@ class EdsLanguageServer(LanguageServer):
         super().__init__(NAME, version, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
         self.analyses = Analyses()
         self.publisher = Publisher(self, self.analyses, self.settings)
+        self._watching = False
 
     def settings(self, uri: str) -> Settings:
         folders = [to_fs_path(folder.uri) or "" for folder in self.workspace.folders.values()]
         return settings_for(to_fs_path(uri), folders)
+
+    def watch_configuration(self) -> None:
+        """Ask the client, once, to report changes of the configuration files (when it can watch files; else
+        edits and saves re-read them). Asked at the first opened document, not on ``initialized``, which
+        the workspace features handle."""
+        workspace = self.client_capabilities.workspace
+        watching = workspace and workspace.did_change_watched_files
+        if self._watching or not (watching and watching.dynamic_registration):
+            return
+        self._watching = True
+        watchers = [types.FileSystemWatcher(glob_pattern=f"**/{name}") for name in CONFIGURATION_FILES]
+        self.client_register_capability(types.RegistrationParams([types.Registration(
+            "edsconv-configuration", types.WORKSPACE_DID_CHANGE_WATCHED_FILES,
+            types.DidChangeWatchedFilesRegistrationOptions(watchers))]))
 
     def formatting(self, analysis: Analysis, positions: Positions, edits: list[actions.Edit]) -> list[types.TextEdit]:
         """``edits`` as LSP text edits; when formatting is refused, the reason shown to the user instead."""
@@ -82,21 +99,7 @@ def create_server() -> EdsLanguageServer:
     return server
 
 
-#: The configuration files edsconv lint reads (docs/lint.md): a change to one re-checks every open document.
-CONFIGURATION_FILES = ("edsconv.toml", "pyproject.toml")
-
-
 def _register_documents(server: EdsLanguageServer) -> None:
-    @server.feature(types.INITIALIZED)
-    async def on_initialized(ls: EdsLanguageServer, params: types.InitializedParams) -> None:
-        workspace = ls.client_capabilities.workspace
-        watching = workspace and workspace.did_change_watched_files
-        if watching and watching.dynamic_registration:  # else the client cannot tell us: edits and saves re-read
-            watchers = [types.FileSystemWatcher(glob_pattern=f"**/{name}") for name in CONFIGURATION_FILES]
-            await ls.client_register_capability_async(types.RegistrationParams([types.Registration(
-                "edsconv-configuration", types.WORKSPACE_DID_CHANGE_WATCHED_FILES,
-                types.DidChangeWatchedFilesRegistrationOptions(watchers))]))
-
     @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
     def did_change_watched_files(ls: EdsLanguageServer, params: types.DidChangeWatchedFilesParams) -> None:
         if any(change.uri.rsplit("/", 1)[-1] in CONFIGURATION_FILES for change in params.changes):
@@ -105,6 +108,7 @@ def _register_documents(server: EdsLanguageServer) -> None:
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: EdsLanguageServer, params: types.DidOpenTextDocumentParams) -> None:
+        ls.watch_configuration()
         ls.publisher.schedule(params.text_document.uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)

@@ -123,5 +123,7 @@ def test_suppression_comment_goes_on_the_entry():
 
 
 def test_formatting_refuses_a_file_with_syntax_errors():
-    assert actions.formatted(analyse(EXAMPLE.replace("Revision = 1.1;", "Revision = 1.1"))) is None
-    assert actions.formatted(analyse(EXAMPLE)).startswith("$ Example EtherNet/IP adapter")
+    broken = analyse(EXAMPLE.replace("Revision = 1.1;", "Revision = 1.1"))
+    assert actions.formatting_edits(broken) == actions.range_formatting_edits(broken, 1, 200) == []
+    assert "1 syntax error(s)" in (actions.format_refusal(broken) or "")
+    assert actions.format_refusal(analyse(EXAMPLE)) is None and actions.formatting_edits(analyse(EXAMPLE))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import sys
 
 import pytest
@@ -10,6 +11,7 @@ pytest.importorskip("pygls")
 pytest_lsp = pytest.importorskip("pytest_lsp")
 
 from lsprotocol import types  # noqa: E402
+from pygls.exceptions import JsonRpcContentModified, JsonRpcException, JsonRpcRequestCancelled  # noqa: E402
 from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
 
 import edsconv  # noqa: E402
@@ -69,6 +71,7 @@ async def test_initialize_announces_every_feature(client: LanguageClient):
     assert capabilities.hover_provider and capabilities.definition_provider and capabilities.references_provider
     assert capabilities.rename_provider.prepare_provider
     assert capabilities.document_formatting_provider and capabilities.document_symbol_provider
+    assert capabilities.document_range_formatting_provider
     assert "[" in capabilities.completion_provider.trigger_characters
     assert list(capabilities.code_action_provider.code_action_kinds) == [types.CodeActionKind.QuickFix]
     assert capabilities.text_document_sync.change is types.TextDocumentSyncKind.Incremental
@@ -153,21 +156,77 @@ async def test_rename_rewrites_every_reference_and_refuses_an_existing_name(clie
         text_document=doc(uri), position=types.Position(67, 10), new_name="Param12"))
     edits = sorted(((e.range.start.line, e.range.start.character), e.new_text) for e in edit.changes[uri])
     assert edits == [((54, 8), "Param12"), ((67, 8), "Enum12"), ((83, 40), "12"), ((109, 18), "Param12")]
-    with pytest.raises(Exception, match="Param2 exists already"):
+    with pytest.raises(JsonRpcException, match="Param2 exists already") as refused:
         await client.text_document_rename_async(types.RenameParams(
             text_document=doc(uri), position=types.Position(67, 10), new_name="Param2"))
+    assert refused.value.code == types.LSPErrorCodes.RequestFailed == -32803
+    connection = EXAMPLE.splitlines().index("        Connection1 =")
+    with pytest.raises(JsonRpcException, match=r"ConnectionN numbers start at 1 and go up by one \(C.4.1.4.9") as gap:
+        await client.text_document_rename_async(types.RenameParams(
+            text_document=doc(uri), position=types.Position(connection, 10), new_name="Connection9"))
+    assert gap.value.code == -32803
 
 
-async def test_formatting_gives_the_canonical_layout_and_nothing_for_syntax_errors(client: LanguageClient):
-    uri, _ = await open_document(client, "format", EXAMPLE)
-    options = types.FormattingOptions(tab_size=4, insert_spaces=True)
-    (edit,) = await client.text_document_formatting_async(types.DocumentFormattingParams(
-        text_document=doc(uri), options=options))
-    assert edit.new_text == write_canonical(edsconv.parse(EXAMPLE))
-    assert edit.range == types.Range(types.Position(0, 0), types.Position(EXAMPLE.count("\n"), 0))
+def applied(text: str, edits: list[types.TextEdit]) -> str:
+    """``text`` after the client applies ``edits`` (positions in ASCII text: characters)."""
+    lines = text.splitlines(keepends=True)
+    offset = lambda position: sum(len(line) for line in lines[:position.line]) + position.character  # noqa: E731
+    for edit in sorted(edits, key=lambda e: (e.range.start.line, e.range.start.character), reverse=True):
+        text = text[:offset(edit.range.start)] + edit.new_text + text[offset(edit.range.end):]
+    return text
+
+
+CANONICAL = write_canonical(edsconv.parse(EXAMPLE))
+#: the canonical text with two lines laid out otherwise: a one-line entry and one line of Param2
+UNTIDY = CANONICAL.replace("    ProdCode = 1001;", "        ProdCode =1001 ;").replace(
+    "        0, 255, 3,\n", "        0,255,3,\n")
+FORMATTING = types.FormattingOptions(tab_size=4, insert_spaces=True)
+
+
+async def test_formatting_rewrites_only_the_lines_that_change(client: LanguageClient):
+    uri, _ = await open_document(client, "format", UNTIDY)
+    edits = await client.text_document_formatting_async(types.DocumentFormattingParams(doc(uri), FORMATTING))
+    assert applied(UNTIDY, edits) == CANONICAL
+    lines = UNTIDY.splitlines()
+    changed = [lines.index("        ProdCode =1001 ;"), lines.index("        0,255,3,")]
+    assert [(e.range.start.line, e.range.end.line) for e in edits] == [(line, line + 1) for line in changed]
+
+
+async def test_range_formatting_lays_out_the_entries_in_the_range_in_place(client: LanguageClient):
+    uri, _ = await open_document(client, "format-range", UNTIDY)
+    lines = UNTIDY.splitlines()
+    prod_code = lines.index("        ProdCode =1001 ;")
+    in_device = types.Range(types.Position(prod_code - 1, 0), types.Position(prod_code + 1, 0))
+    (edit,) = await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(uri), in_device, FORMATTING))
+    assert (edit.range.start.line, edit.range.end.line, edit.new_text) == (prod_code, prod_code + 1,
+                                                                            "    ProdCode = 1001;\n")
+    param2 = lines.index("    Param2 =")  # the range covers one line of the entry: the entry is laid out
+    (edit,) = await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(uri), types.Range(types.Position(param2 + 1, 0), types.Position(param2 + 1, 3)), FORMATTING))
+    assert edit.new_text == "        0, 255, 3,\n"
+    # a range over the whole of an untidy file gives every entry its layout; nothing moves
+    whole = types.Range(types.Position(0, 0), types.Position(len(EXAMPLE.splitlines()), 0))
+    edits = await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc((await open_document(client, "format-range-all", EXAMPLE))[0]), whole, FORMATTING))
+    laid_out = applied(EXAMPLE, edits)
+    assert write_canonical(edsconv.parse(laid_out)) == CANONICAL
+    assert "        0, 255, 3,\n" in laid_out and "    ProdCode = 1001;\n" in laid_out
+    keywords = lambda text: [line.split("=")[0].strip() for line in text.splitlines() if " =" in line]  # noqa: E731
+    assert keywords(laid_out) == keywords(EXAMPLE)
+
+
+async def test_formatting_refused_for_a_syntax_error_says_why(client: LanguageClient):
     broken_uri, _ = await open_document(client, "format-broken", EXAMPLE.replace("Revision = 1.1;", "Revision = 1.1"))
+    client.messages.clear()
     assert not await client.text_document_formatting_async(types.DocumentFormattingParams(
-        text_document=doc(broken_uri), options=options))
+        doc(broken_uri), FORMATTING))
+    assert not await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(broken_uri), types.Range(types.Position(0, 0), types.Position(3, 0)), FORMATTING))
+    first, second = client.messages
+    assert first.type is types.MessageType.Warning and first == second
+    assert first.message.startswith("edsconv: not formatted: 1 syntax error(s) leave text that cannot be laid out")
+    assert "EDS002" in first.message
 
 
 async def completion_labels(client: LanguageClient, uri: str, line: int, character: int) -> dict[str, str | None]:
@@ -261,4 +320,131 @@ async def test_shutdown_ends_the_server():
     await own.initialize_session(types.InitializeParams(capabilities=types.ClientCapabilities()))
     await own.shutdown_session()
     assert own._server.returncode == 0
+    await own.stop()
+
+
+#: io_adapter.eds with 3,000 more parameters: an analysis long enough for a burst of changes to overtake it
+LARGE = EXAMPLE.replace("[Groups]", "".join(
+    f'        Param{n} = 0,,,0x0000,0xC8,4,"P{n}","","",0,100,1,,,,,,,,,;\n' for n in range(5, 3005)) + "\n[Groups]")
+
+
+async def test_a_burst_of_changes_and_requests_builds_no_backlog(client: LanguageClient):
+    uri, _ = await open_document(client, "burst", LARGE)
+    line = LARGE.splitlines().index("        Param2 =")
+    hovers = []
+    for version in range(2, 12):  # a change and a hover per keystroke, faster than one analysis
+        client.protocol.notify(types.TEXT_DOCUMENT_DID_CHANGE,
+                               replace(uri, version, line + 6, 17, 18, "ABCDEFGHIJ"[version - 2]))
+        hovers.append(asyncio.ensure_future(client.text_document_hover_async(
+            types.HoverParams(doc(uri), types.Position(line, 10)))))
+        await asyncio.sleep(0)  # the request goes out now, before the next change
+    answers = await asyncio.gather(*hovers, return_exceptions=True)
+    superseded = [a for a in answers[:-1] if getattr(a, "code", None) == JsonRpcContentModified.CODE]
+    assert superseded and all(a in superseded or isinstance(a, types.Hover) for a in answers[:-1])
+    assert "**ParamN**" in answers[-1].contents.value  # the last text's request is answered
+    published = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+    assert (published.uri, published.version) == (uri, 11)  # one publication, for the last text
+
+
+async def test_a_cancelled_request_answers_request_cancelled_and_cancels_nothing_shared(client: LanguageClient):
+    uri, _ = await open_document(client, "cancel", LARGE)
+    client.text_document_did_change(replace(uri, 2, 3, 0, 0, " "))
+    cancelled = asyncio.ensure_future(client.protocol.send_request_async(
+        types.TEXT_DOCUMENT_HOVER, types.HoverParams(doc(uri), types.Position(28, 10)), msg_id="x"))
+    await asyncio.sleep(0)  # sent: the server waits for the changed text's analysis
+    client.protocol.notify(types.CANCEL_REQUEST, types.CancelParams(id="x"))
+    with pytest.raises(JsonRpcRequestCancelled):
+        await cancelled
+    after = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(28, 10)))
+    assert after.contents.value.startswith("**ParamN**")
+    published = await asyncio.wait_for(client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS), 30)
+    assert published.version == 2  # the diagnostics of the text the cancelled request waited for
+
+
+#: io_adapter.eds with a [Capacity] section (newer CIP tables) holding an entry, a blank line and a comment
+NEWER = EXAMPLE.replace("[Port]", "[Capacity]\n        MaxMsgConnections = 6;\n        \n"
+                                  "        $ see the notes,\n\n[Port]")
+
+
+async def test_hover_and_completion_know_the_newer_cip_tables_the_linter_uses(client: LanguageClient):
+    uri, diagnostics = await open_document(client, "newer", NEWER)
+    lines = NEWER.splitlines()
+    capacity = lines.index("[Capacity]")
+    section = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(capacity, 3)))
+    assert section.contents.value.startswith("**[Capacity]** Capacity: optional (not in ISO 15745-4:2003; a later "
+                                             "CIP edition, as eds-pie `meta_eds_lib.json: Capacity`")
+    entry = await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(capacity + 1, 12)))
+    assert entry.contents.value.startswith("**MaxMsgConnections** (not in ISO 15745-4:2003; a later CIP edition")
+    assert "Maximum explicit connections" in entry.contents.value
+    keywords = await completion_labels(client, uri, capacity + 2, 8)
+    assert {"TSpec1", "ConnOverhead", "MaxIOConnections"} <= set(keywords) and "MaxMsgConnections" not in keywords
+    sections = await completion_labels(client, uri, capacity + 5, 1)  # after the "[" of [Port]
+    assert {"TCP/IP Interface Class", "Ethernet Link Class"} <= set(sections) and "Capacity" not in sections
+
+
+async def test_no_completion_or_hover_in_comments_and_parameters_in_a_path_after_a_bracket(client: LanguageClient):
+    text = NEWER.replace('"20 04 24 97 2C 96 2C 64";', '"20 04 24 97 2C [ 2C 64";')
+    uri, _ = await open_document(client, "comments", text)
+    lines = text.splitlines()
+    comment = lines.index("        $ see the notes,")
+    assert not (await client.text_document_completion_async(types.CompletionParams(
+        doc(uri), types.Position(comment, len(lines[comment]))))).items
+    rpi = lines.index("                Param1,2,Assem150,      $ O=>T RPI, size, format")
+    assert await completion_labels(client, uri, rpi, len(lines[rpi])) == {}  # after the comment's last ','
+    assert await client.text_document_hover_async(types.HoverParams(doc(uri), types.Position(rpi, 44))) is None
+    path = next(index for index, line in enumerate(lines) if '2C [ 2C 64"' in line)
+    in_brackets = await completion_labels(client, uri, path, lines[path].index("[") + 1)
+    assert set(in_brackets) == {"Param1", "Param2", "Param3", "Param4"} and in_brackets["Param1"] == "RPI"
+    assert await completion_labels(client, uri, path, lines[path].index("24")) == {}  # elsewhere in the string
+
+
+async def test_hover_is_plain_text_for_a_client_that_asks_for_it():
+    own = await SERVER.start()  # eglot without markdown-mode declares plaintext only
+    await own.initialize_session(types.InitializeParams(capabilities=types.ClientCapabilities(
+        text_document=types.TextDocumentClientCapabilities(hover=types.HoverClientCapabilities(
+            content_format=[types.MarkupKind.PlainText])))))
+    uri, _ = await open_document(own, "plain", EXAMPLE)
+    found = await own.text_document_hover_async(types.HoverParams(doc(uri), types.Position(94, 20)))
+    assert found.contents.kind is types.MarkupKind.PlainText
+    assert "Param2 'Input Filter': USINT 0xC6" in found.contents.value
+    assert not any(mark in found.contents.value for mark in ("**", "`", "---"))
+    await own.shutdown_session()
+    await own.stop()
+
+
+async def test_a_changed_configuration_applies_at_once_and_a_broken_one_is_reported(tmp_path):
+    own = await SERVER.start()
+    registrations: list[types.Registration] = []
+
+    @own.feature(types.CLIENT_REGISTER_CAPABILITY)
+    def register(params: types.RegistrationParams) -> None:
+        registrations.extend(params.registrations)
+
+    await own.initialize_session(types.InitializeParams(capabilities=types.ClientCapabilities(
+        workspace=types.WorkspaceClientCapabilities(
+            did_change_watched_files=types.DidChangeWatchedFilesClientCapabilities(dynamic_registration=True)))))
+    uri = (tmp_path / "watched.eds").as_uri()
+    own.text_document_did_open(types.DidOpenTextDocumentParams(
+        types.TextDocumentItem(uri=uri, language_id="eds", version=1, text=BROKEN)))
+    assert [d.code for d in await diagnostics_of(own, uri)] == ["EDS301"]
+    (registration,) = registrations
+    assert registration.method == types.WORKSPACE_DID_CHANGE_WATCHED_FILES
+    assert [w["globPattern"] for w in registration.register_options["watchers"]] == ["**/edsconv.toml",
+                                                                                    "**/pyproject.toml"]
+    config = tmp_path / "edsconv.toml"
+
+    def changed(text: str) -> None:
+        config.write_text(text, encoding="utf-8")
+        own.workspace_did_change_watched_files(types.DidChangeWatchedFilesParams(
+            [types.FileEvent(config.as_uri(), types.FileChangeType.Changed)]))
+
+    changed('ignore = ["EDS301"]\n')
+    assert await diagnostics_of(own, uri) == []  # no edit needed
+    changed('ignore = "EDS301"\n')
+    assert [d.code for d in await diagnostics_of(own, uri)] == ["EDS301"]  # the defaults, and a message why
+    (message,) = own.messages
+    assert message.type is types.MessageType.Warning
+    assert message.message.startswith("edsconv: the configuration cannot be read, the defaults apply:")
+    assert "edsconv.toml" in message.message
+    await own.shutdown_session()
     await own.stop()

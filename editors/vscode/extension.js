@@ -6,17 +6,20 @@
 const vscode = require("vscode");
 const { LanguageClient } = require("vscode-languageclient/node");
 
+// Files on disk and unsaved ones only: the other schemes (git diffs, the merge editor, live
+// share ...) show a second copy of a file the server already checks, and would duplicate its
+// diagnostics.
+const DOCUMENT_SELECTOR = [
+  { scheme: "file", language: "eds" },
+  { scheme: "untitled", language: "eds" },
+];
+const SETTING = "edsconv.server.command";
+
 let client;
 
-async function activate(context) {
+async function start() {
   const [command, ...args] = vscode.workspace.getConfiguration("edsconv").get("server.command");
-  client = new LanguageClient(
-    "edsconv",
-    "edsconv",
-    { command, args },
-    { documentSelector: [{ language: "eds" }] },
-  );
-  context.subscriptions.push(client);
+  client = new LanguageClient("edsconv", "edsconv", { command, args }, { documentSelector: DOCUMENT_SELECTOR });
   try {
     await client.start();
   } catch (error) {
@@ -26,8 +29,32 @@ async function activate(context) {
   }
 }
 
+async function restart() {
+  const running = client;
+  client = undefined;
+  if (running) {
+    try {
+      await running.stop();
+    } catch {
+      // a server that never started, or died: nothing to stop
+    }
+  }
+  await start();
+}
+
+async function activate(context) {
+  context.subscriptions.push(
+    vscode.commands.registerCommand("edsconv.restartServer", restart),
+    vscode.workspace.onDidChangeConfiguration((event) => {
+      if (event.affectsConfiguration(SETTING)) return restart();
+      return undefined;
+    }),
+  );
+  await start();
+}
+
 function deactivate() {
   return client ? client.stop() : undefined;
 }
 
-module.exports = { activate, deactivate };
+module.exports = { activate, deactivate, DOCUMENT_SELECTOR };

@@ -3,7 +3,7 @@
 -- "line:character CODE severity message", 0-based as LSP sends them) and quit.
 -- Uses only what Neovim 0.7 (Debian 12) already has: vim.lsp.start_client and buf_attach_client.
 local out = assert(os.getenv("EDSCONV_NVIM_OUT"), "EDSCONV_NVIM_OUT is not set")
-local python = assert(os.getenv("EDSCONV_PYTHON"), "EDSCONV_PYTHON is not set")
+local attach = dofile(vim.fn.fnamemodify(debug.getinfo(1, "S").source:sub(2), ":h") .. "/attach.lua")
 
 local function write_and_quit(diagnostics)
   local lines = {}
@@ -17,18 +17,4 @@ local function write_and_quit(diagnostics)
   vim.cmd("qall!")
 end
 
-local client = vim.lsp.start_client({
-  name = "edsconv",
-  cmd = { python, "-m", "edsconv", "lsp" },
-  root_dir = vim.fn.getcwd(),
-  handlers = {
-    ["textDocument/publishDiagnostics"] = function(_, result)
-      write_and_quit(result.diagnostics)
-    end,
-  },
-})
-vim.lsp.buf_attach_client(0, client)
-vim.defer_fn(function()
-  io.stderr:write("no diagnostics within 30 s\n")
-  vim.cmd("cquit 3")
-end, 30000)
+attach(function(result) write_and_quit(result.diagnostics) end)

@@ -1,5 +1,6 @@
 // extension.js with stand-ins for the vscode API and the language client: it starts the server
-// command from the `edsconv.server.command` setting for documents of the language "eds".
+// command from the `edsconv.server.command` setting for "eds" documents on disk or unsaved, and
+// restarts it when the setting changes or on the "restart" command.
 "use strict";
 
 const test = require("node:test");
@@ -22,30 +23,67 @@ function loadExtension(stubs) {
   }
 }
 
-test("activate starts the configured server for EDS documents", async () => {
-  const started = [];
-  class LanguageClient {
+function fakeVscode(settings, shown = []) {
+  const commands = {};
+  const listeners = [];
+  return {
+    commands,
+    listeners,
+    vscode: {
+      workspace: {
+        getConfiguration: (section) => ({ get: (key) => {
+          assert.strictEqual(`${section}.${key}`, "edsconv.server.command");
+          return settings.command;
+        } }),
+        onDidChangeConfiguration: (listener) => { listeners.push(listener); return { dispose() {} }; },
+      },
+      commands: { registerCommand: (name, run) => { commands[name] = run; return { dispose() {} }; } },
+      window: { showErrorMessage: (message) => shown.push(message) },
+    },
+  };
+}
+
+function fakeClient(started, stopped) {
+  return class LanguageClient {
     constructor(id, name, serverOptions, clientOptions) {
       Object.assign(this, { id, name, serverOptions, clientOptions });
     }
     async start() { started.push(this); }
-    async stop() {}
+    async stop() { stopped.push(this); }
     dispose() {}
-  }
-  const vscode = {
-    workspace: { getConfiguration: (section) => ({ get: (key) => {
-      assert.strictEqual(`${section}.${key}`, "edsconv.server.command");
-      return ["/venv/bin/edsconv", "lsp"];
-    } }) },
-    window: { showErrorMessage: (message) => assert.fail(message) },
   };
-  const extension = loadExtension({ vscode, "vscode-languageclient/node": { LanguageClient } });
-  const context = { subscriptions: [] };
-  await extension.activate(context);
+}
+
+test("activate starts the configured server for EDS files on disk and unsaved ones only", async () => {
+  const started = [];
+  const fake = fakeVscode({ command: ["/venv/bin/edsconv", "lsp"] });
+  const LanguageClient = fakeClient(started, []);
+  const extension = loadExtension({ vscode: fake.vscode, "vscode-languageclient/node": { LanguageClient } });
+  await extension.activate({ subscriptions: [] });
   assert.strictEqual(started.length, 1);
   assert.deepStrictEqual(started[0].serverOptions, { command: "/venv/bin/edsconv", args: ["lsp"] });
-  assert.deepStrictEqual(started[0].clientOptions.documentSelector, [{ language: "eds" }]);
-  assert.deepStrictEqual(context.subscriptions, [started[0]]);
+  // no git: or other virtual document: they would duplicate the diagnostics of the file itself
+  assert.deepStrictEqual(started[0].clientOptions.documentSelector,
+    [{ scheme: "file", language: "eds" }, { scheme: "untitled", language: "eds" }]);
+});
+
+test("a changed server setting and the restart command restart the server", async () => {
+  const started = [];
+  const stopped = [];
+  const settings = { command: ["edsconv", "lsp"] };
+  const fake = fakeVscode(settings);
+  const LanguageClient = fakeClient(started, stopped);
+  const extension = loadExtension({ vscode: fake.vscode, "vscode-languageclient/node": { LanguageClient } });
+  await extension.activate({ subscriptions: [] });
+  settings.command = ["/other/venv/bin/edsconv", "lsp"];
+  await fake.listeners[0]({ affectsConfiguration: (name) => name === "edsconv.server.command" });
+  assert.deepStrictEqual(stopped, [started[0]]);
+  assert.strictEqual(started[1].serverOptions.command, "/other/venv/bin/edsconv");
+  await fake.listeners[0]({ affectsConfiguration: () => false });  // another setting: nothing happens
+  assert.strictEqual(started.length, 2);
+  await fake.commands["edsconv.restartServer"]();
+  assert.deepStrictEqual(stopped, [started[0], started[1]]);
+  assert.strictEqual(started.length, 3);
 });
 
 test("a server that cannot start is reported, not thrown", async () => {
@@ -54,10 +92,7 @@ test("a server that cannot start is reported, not thrown", async () => {
     async start() { throw new Error("spawn edsconv ENOENT"); }
     dispose() {}
   }
-  const vscode = {
-    workspace: { getConfiguration: () => ({ get: () => ["edsconv", "lsp"] }) },
-    window: { showErrorMessage: (message) => shown.push(message) },
-  };
+  const { vscode } = fakeVscode({ command: ["edsconv", "lsp"] }, shown);
   const extension = loadExtension({ vscode, "vscode-languageclient/node": { LanguageClient } });
   await extension.activate({ subscriptions: [] });
   assert.strictEqual(shown.length, 1);

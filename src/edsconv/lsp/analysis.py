@@ -2,17 +2,23 @@
 and every place that names an entry.
 
 :class:`Analyses` keeps the latest analysis of each open document and runs new
-ones in a worker thread, so that reading a large file never holds up the
-messages the editor sends meanwhile. An analysis asked for twice (diagnostics
-and a hover on the same version) runs once.
+ones in a worker thread of their own, one at a time, so that reading a large
+file never holds up the messages the editor sends meanwhile. An analysis asked
+for twice (diagnostics and a hover on the same version) runs once. A newer text
+supersedes the analysis of an older one: a queued one never starts, a running
+one stops at its next step (between reading, the model and each check), so that
+a client sending a request per keystroke builds no backlog. An analysis is
+ready in two steps: first the models and references (what hover, completion and
+navigation read), then the diagnostics.
 """
 
 from __future__ import annotations
 
 import asyncio
-import functools
 import re
 import traceback
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 import edsconv
@@ -33,6 +39,7 @@ class Analysis:
     lines: tuple[str, ...]
     eds: EdsFile
     device: Device
+    #: every diagnostic, sorted by position (empty until the checks have run: see :meth:`Analyses.checked`)
     diagnostics: list[Diagnostic]
     #: every place that names an entry (hover and navigation)
     spans: list[Occurrence] = field(repr=False)
@@ -44,38 +51,141 @@ class Analysis:
         return self.lines[line - 1].rstrip("\r\n") if 0 < line <= len(self.lines) else ""
 
 
-def analyse(text: str, version: int | None = None, path: str | None = None) -> Analysis:
-    """Read and check ``text``; a failure of edsconv itself becomes an EDS000 diagnostic, never an exception."""
+class Superseded(Exception):
+    """A newer text of the document arrived before this analysis was done: it stopped."""
+
+
+def split_lines(text: str) -> tuple[str, ...]:
+    """The lines of ``text`` with their line ends, as LSP counts them."""
+    return tuple(_LINE.findall(text))
+
+
+def _never() -> bool:
+    return False
+
+
+def analyse(text: str, version: int | None = None, path: str | None = None, *,
+            superseded: Callable[[], bool] = _never,
+            readable: Callable[[Analysis], object] | None = None) -> Analysis:
+    """Read and check ``text``; a failure of edsconv itself becomes an EDS000 diagnostic, never an exception.
+
+    ``superseded`` is asked between the steps: when it says so, :class:`Superseded` is raised.
+    ``readable`` is handed the analysis once its models and references are made, before the checks run.
+    """
+    from edsconv.checks import Context, load_checks
+    from edsconv.eds.reader import paused_gc
+    from edsconv.model.build import build
+
+    def step() -> None:
+        if superseded():
+            raise Superseded
+
+    step()
+    lines = split_lines(text)
+    eds = edsconv.parse(text, path)
+    step()
+    with paused_gc():
+        try:
+            device = build(eds)
+            step()
+            analysis = Analysis(version, text, lines, eds, device, [], occurrences(eds, device, lines),
+                                definitions(device))
+            if readable is not None:
+                readable(analysis)
+            diagnostics = [*eds.diagnostics, *device.diagnostics]
+            context = Context(eds, device)
+            for check in load_checks():
+                step()
+                diagnostics += check.run(context)
+        except Superseded:
+            raise
+        except Exception as error:  # noqa: BLE001 - the editor gets a diagnostic, the server keeps running
+            return _failed(text, version, path, lines, eds, error)
+    diagnostics.sort(key=lambda d: (d.line, d.column))
+    analysis.diagnostics = diagnostics
+    return analysis
+
+
+def _failed(text: str, version: int | None, path: str | None, lines: tuple[str, ...], eds: EdsFile,
+            error: Exception) -> Analysis:
+    """The analysis of a text edsconv failed on: its syntax diagnostics and EDS000 saying where it failed."""
     from edsconv.lint import INTERNAL_ERROR
 
-    lines = tuple(_LINE.findall(text))
-    eds = edsconv.parse(text, path)
-    try:
-        device, diagnostics = edsconv.analyse(eds)
-    except Exception as error:  # noqa: BLE001 - the editor gets a diagnostic, the server keeps running
-        where = traceback.extract_tb(error.__traceback__)[-1]
-        message = f"internal error {type(error).__name__}: {error} (at {where.name}:{where.lineno}); please report it"
-        device, diagnostics = Device(eds=eds), [*eds.diagnostics, Diagnostic.of(INTERNAL_ERROR, message, 1, 1, path)]
-    diagnostics.sort(key=lambda d: (d.line, d.column))
+    where = traceback.extract_tb(error.__traceback__)[-1]
+    message = f"internal error {type(error).__name__}: {error} (at {where.name}:{where.lineno}); please report it"
+    device = Device(eds=eds)
+    diagnostics = sorted([*eds.diagnostics, Diagnostic.of(INTERNAL_ERROR, message, 1, 1, path)],
+                         key=lambda d: (d.line, d.column))
     return Analysis(version, text, lines, eds, device, diagnostics, occurrences(eds, device, lines),
                     definitions(device))
+
+
+@dataclass(slots=True)
+class _Run:
+    """One analysis under way: its text, whether a newer text superseded it, and its two results."""
+
+    text: str
+    #: the models and references (hover, completion, navigation)
+    readable: asyncio.Future[Analysis]
+    #: everything, diagnostics included
+    checked: asyncio.Future[Analysis]
+    superseded: bool = False
 
 
 class Analyses:
     """The latest analysis of each document, by URI."""
 
     def __init__(self) -> None:
-        self._latest: dict[str, tuple[str, asyncio.Future[Analysis]]] = {}
+        self._latest: dict[str, _Run] = {}
+        #: one analysis at a time: two would share the interpreter and both be late
+        self._worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="edsconv-analysis")
 
     def of(self, uri: str, text: str, version: int | None, path: str | None) -> asyncio.Future[Analysis]:
-        """The analysis of this text, started in a worker thread unless it already runs or ran."""
+        """The whole analysis of this text (diagnostics included); it fails with :class:`Superseded`
+        when a newer text of the document is asked for before it is done."""
+        return self._run(uri, text, version, path).checked
+
+    def readable(self, uri: str, text: str, version: int | None, path: str | None) -> asyncio.Future[Analysis]:
+        """The analysis of this text as soon as its models and references are made (its diagnostics may
+        still be empty): what hover, completion and navigation need, without waiting for the checks."""
+        return self._run(uri, text, version, path).readable
+
+    def _run(self, uri: str, text: str, version: int | None, path: str | None) -> _Run:
         known = self._latest.get(uri)
-        if known is not None and known[0] == text and not known[1].cancelled():
-            return known[1]
+        if known is not None and known.text == text:
+            return known
+        if known is not None:
+            known.superseded = True
         loop = asyncio.get_running_loop()
-        future = loop.run_in_executor(None, functools.partial(analyse, text, version, path))
-        self._latest[uri] = (text, future)
-        return future
+        run = _Run(text, loop.create_future(), loop.create_future())
+        self._latest[uri] = run
+
+        def settle(future: asyncio.Future[Analysis], analysis: Analysis | None, error: BaseException | None) -> None:
+            if future.done():
+                return
+            if error is None:
+                future.set_result(analysis)  # type: ignore[arg-type]  # given when there is no error
+            else:
+                future.set_exception(error)
+
+        def work() -> None:
+            try:
+                analysis = analyse(text, version, path, superseded=lambda: run.superseded,
+                                   readable=lambda a: loop.call_soon_threadsafe(settle, run.readable, a, None))
+            except BaseException as error:  # noqa: BLE001 - handed to whoever waits for this text
+                for future in (run.readable, run.checked):
+                    loop.call_soon_threadsafe(settle, future, None, error)
+                return
+            for future in (run.readable, run.checked):
+                loop.call_soon_threadsafe(settle, future, analysis, None)
+
+        self._worker.submit(work)
+        for future in (run.readable, run.checked):  # nobody may be waiting for a superseded text's analysis
+            future.add_done_callback(lambda f: f.cancelled() or f.exception())
+        return run
 
     def forget(self, uri: str) -> None:
-        self._latest.pop(uri, None)
+        """The document changed or closed: the analysis of its old text stops at its next step."""
+        known = self._latest.pop(uri, None)
+        if known is not None:
+            known.superseded = True

@@ -10,13 +10,13 @@
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Callable
 from pathlib import Path
 
 from edsconv import describe
 from edsconv.eds.source import encode
 from edsconv.fix import Edit, fix_source, split_lines
+from edsconv.lsp.actions import minimal_edits
 from edsconv.lsp.analysis import Analysis
 from edsconv.lsp.settings import Settings
 
@@ -69,12 +69,4 @@ def fix_all(analysis: Analysis, settings: Settings) -> list[Edit]:
         return settings.kept(eds, check(eds, settings.rules))
 
     outcome = fix_source(encode(analysis.text, "utf-8"), analysis.eds.path, reported)
-    return line_edits(analysis.text, outcome.data.decode("utf-8"))
-
-
-def line_edits(old: str, new: str) -> list[Edit]:
-    """Edits that turn ``old`` into ``new``, each replacing a run of whole lines that differ."""
-    old_lines, new_lines = split_lines(old), split_lines(new)
-    matcher = difflib.SequenceMatcher(None, old_lines, new_lines, autojunk=False)
-    return [Edit(first + 1, 1, last + 1, 1, "".join(new_lines[start:end]))
-            for tag, first, last, start, end in matcher.get_opcodes() if tag != "equal"]
+    return minimal_edits(analysis.lines, split_lines(outcome.data.decode("utf-8")), 1)

@@ -12,13 +12,15 @@ from pygls.lsp.server import LanguageServer
 
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.eds.locate import value_end
-from edsconv.lsp.analysis import Analyses, Analysis
+from edsconv.lsp.analysis import Analyses, Analysis, Superseded
 from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings
 
 SOURCE = "edsconv"
-#: Seconds without a change before a changed document is checked again.
-CHANGE_DELAY = 0.3
+#: Seconds without a change before a changed document is checked again: short, since a newer change
+#: stops the check of an older text (lsp.analysis) and clients wait for a pause in typing themselves
+#: (Neovim 150 ms, eglot 0.5 s) before they send the change.
+CHANGE_DELAY = 0.05
 _SEVERITY = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning,
              Severity.INFO: types.DiagnosticSeverity.Information}
 
@@ -59,6 +61,8 @@ class Publisher:
         self._analyses = analyses
         self._settings = settings
         self._pending: dict[str, asyncio.Task] = {}
+        #: the configuration errors already shown (each once, not on every keystroke)
+        self._reported: set[str] = set()
 
     def schedule(self, uri: str, delay: float = 0.0) -> None:
         """Check ``uri`` after ``delay`` seconds; a newer call for the same document replaces this one."""
@@ -79,12 +83,20 @@ class Publisher:
             return  # closed meanwhile
         document = self._server.workspace.get_text_document(uri)
         text, version = document.source, document.version
-        analysis = await asyncio.shield(self._analyses.of(uri, text, version, document.path))
+        try:
+            analysis = await asyncio.shield(self._analyses.of(uri, text, version, document.path))
+        except Superseded:
+            return  # a newer text's own check publishes
         documents = self._server.workspace.text_documents
         if uri not in documents or documents[uri].source != text:
             return  # changed while it was being checked: the newer text's own check publishes
         positions = Positions(self._server.workspace.position_codec, analysis.lines)
         settings = self._settings(uri)
+        if settings.error is not None and settings.error not in self._reported:
+            self._reported.add(settings.error)
+            self._server.window_show_message(types.ShowMessageParams(
+                types.MessageType.Warning, f"edsconv: the configuration cannot be read, the defaults apply: "
+                                           f"{settings.error}"))
         items = [to_lsp(d, analysis, positions) for d in settings.kept(analysis.eds, analysis.diagnostics)]
         self._server.text_document_publish_diagnostics(
             types.PublishDiagnosticsParams(uri=uri, diagnostics=items, version=version))

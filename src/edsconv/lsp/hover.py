@@ -1,16 +1,19 @@
 """Hover: what the spec says a section, entry or field is, what a reference points to, and what
 the bits of a bit-field value mean, in Markdown.
 
-The words come from the spec tables (:mod:`edsconv.spec_tables`) and from the
-descriptions ``edsconv show`` prints (:mod:`edsconv.describe`), so the editor and the
-command line say the same thing.
+The words come from the tables the linter checks against (the 2003 tables of
+:mod:`edsconv.spec_tables`, then the newer CIP tables of :mod:`edsconv.cip_tables`:
+[Capacity], [TCP/IP Interface Class], the object class sections and the newer
+entries of 2003 sections, with their source) and from the descriptions
+``edsconv show`` prints (:mod:`edsconv.describe`), so the editor and the command
+line say the same thing. Comment text has no hover.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from edsconv import describe
+from edsconv import cip_tables, describe
 from edsconv import spec_tables as tables
 from edsconv.eds.locate import Spot, locate, value_end
 from edsconv.eds.syntax import Entry, Field, Section, String
@@ -25,8 +28,35 @@ from edsconv.model.values import ValueProblem, to_integer, to_path
 Span = tuple[int, int, int, int]
 
 
+def section_spec(name: str) -> tables.SectionSpec | None:
+    """The table of a section: the 2003 text's, else the newer CIP tables' (as the linter reads them)."""
+    return tables.section_spec(name) or cip_tables.section_spec(name)
+
+
+def entry_spec(section: str, keyword: str) -> tables.EntrySpec | None:
+    """The spec of an entry of ``section``: the 2003 text's, else the newer CIP tables'."""
+    return tables.entry_spec(section, keyword) or cip_tables.entry_spec(section, keyword)
+
+
+def text_at(line_text: str, column: int) -> str | None:
+    """"comment" when ``column`` (1-based) lies in a ``$`` comment, "string" when inside a quoted
+    string (C.4.1.2.2.5: ``\\`` escapes the next character), else None."""
+    in_string = escaped = False
+    for character in line_text[:column - 1]:
+        if in_string:
+            in_string = escaped or character != '"'
+            escaped = not escaped and character == "\\"
+        elif character == '"':
+            in_string = True
+        elif character == "$":
+            return "comment"
+    return "string" if in_string else None
+
+
 def hover(analysis: Analysis, line: int, column: int) -> tuple[str, Span] | None:
     """The Markdown shown for ``line``:``column`` and the span it is about; None where there is nothing to say."""
+    if text_at(analysis.line_text(line), column + 1) == "comment":
+        return None
     spot = locate(analysis.eds, line, column)
     parts: list[str] = []
     span: Span | None = None
@@ -53,14 +83,33 @@ def hover(analysis: Analysis, line: int, column: int) -> tuple[str, Span] | None
     return ("\n\n---\n\n".join(parts), span) if parts and span else None
 
 
+def plain_text(markdown: str) -> str:
+    """The hover text for a client that shows plain text only (eglot without markdown-mode): no
+    emphasis, no code marks, a blank line between the parts instead of a rule."""
+    return markdown.replace("\n\n---\n\n", "\n\n").replace("**", "").replace("`", "")
+
+
 # --- the spec ------------------------------------------------------------------------------
 
 
+def _source(provenance: tables.Provenance) -> str:
+    """Where a fact beyond the 2003 text comes from, in a few words."""
+    sources = [f"eds-pie `{provenance.eds_pie}`"] if provenance.eds_pie else []
+    if provenance.files:
+        sources.append(f"{provenance.files} of {cip_tables.CORPUS.split('(')[-1].rstrip(')')}")
+    return "not in ISO 15745-4:2003; a later CIP edition, as " + " and ".join(sources or ["real files write it"])
+
+
 def section_text(section: Section) -> str:
-    spec = tables.section_spec(section.name)
+    spec = section_spec(section.name)
     if spec is None:
-        return f"**[{section.name}]**: not a section of ISO 15745-4:2003; edsconv keeps it as written."
-    lines = [f"**[{section.name}]** {spec.title} ({spec.clause}): {spec.presence}"]
+        return f"**[{section.name}]**: not a section of ISO 15745-4:2003 or the newer CIP tables; kept as written."
+    if spec.provenance is not None:
+        lines = [f"**[{section.name}]** {spec.title}: {spec.presence} ({_source(spec.provenance)})"]
+        if spec.class_id is not None:
+            lines.append(f"Describes CIP object class 0x{spec.class_id:02X}.")
+    else:
+        lines = [f"**[{section.name}]** {spec.title} ({spec.clause}): {spec.presence}"]
     enip = spec.network_presence.get(tables.ETHERNETIP)
     if enip is not None and enip is not spec.presence:
         lines[0] += f"; for EtherNet/IP (Table C.27) {enip}"
@@ -72,13 +121,15 @@ def section_text(section: Section) -> str:
 
 
 def entry_text(section: Section | None, entry: Entry) -> str:
-    spec = tables.entry_spec(section.name, entry.keyword) if section is not None else None
+    spec = entry_spec(section.name, entry.keyword) if section is not None else None
     if spec is None:
         vendor = " (a vendor-specific keyword)" if tables.is_vendor_keyword(entry.keyword) else ""
-        return f"**{entry.keyword}**{vendor}: not an entry of this section in ISO 15745-4:2003; kept as written."
+        return (f"**{entry.keyword}**{vendor}: not an entry of this section in ISO 15745-4:2003 or the newer "
+                "CIP tables; kept as written.")
     family = f"{spec.keyword}N" if spec.numbered else spec.keyword
     table = f", Table {spec.table}" if spec.table else ""
-    text = f"**{family}** ({spec.clause}{table}): {spec.description}. {str(spec.presence).capitalize()}."
+    source = _source(spec.provenance) if spec.provenance is not None else f"{spec.clause}{table}"
+    text = f"**{family}** ({source}): {spec.description}. {str(spec.presence).capitalize()}."
     if spec.pairs_with:
         text += f" Belongs to `{spec.pairs_with}N` of the same number."
     if spec.sequential:
@@ -90,13 +141,13 @@ def field_text(spot: Spot, device: Device) -> str:
     entry, item, index = spot.entry, spot.field, spot.field_path[0]
     if entry is None or item is None:
         return ""
-    spec = tables.entry_spec(spot.section.name, entry.keyword) if spot.section is not None else None
+    spec = entry_spec(spot.section.name, entry.keyword) if spot.section is not None else None
     field_spec = spec.field_at(index + 1) if spec is not None else None
     if field_spec is None:
         return f"{entry.keyword} field {index + 1}: not a field the spec defines for this entry."
     lines = [f"**{entry.keyword} field {index + 1}: {field_spec.name}** ({_type_words(field_spec.eds_type)}), "
              f"{field_spec.presence}" + (f"; Table {field_spec.table}" if field_spec.table else "")
-             + f" ({field_spec.clause})"]
+             + f" ({_source(field_spec.provenance) if field_spec.provenance else field_spec.clause})"]
     if field_spec.note:
         lines.append(field_spec.note)
     if field_spec.choices:

@@ -3,7 +3,9 @@
 A rename renumbers an entry within its family (``Param7`` -> ``Param12``) and
 rewrites every place that names it: references, path substitutions, group
 members (written as bare numbers) and the entries paired with it by number
-(``Enum7`` -> ``Enum12``). It is refused when an entry of the new name exists.
+(``Enum7`` -> ``Enum12``). It is refused when an entry of the new name exists, and
+for a family whose numbers start at 1 and go up by one (ConnectionN, GroupN,
+ClassN, RackN): any new number would leave a gap or a duplicate there.
 """
 
 from __future__ import annotations
@@ -56,6 +58,7 @@ def rename(analysis: Analysis, line: int, column: int, new_name: str) -> list[tu
     new_family, number = tables.split_numbered(new_name.strip())
     if number is None or new_family != family:
         raise RenameRefused(f"{found.target} can only be renumbered within its family: {family}<number>")
+    _refuse_sequential(analysis, found.target, new_name.strip())
     spans = references_to(found.target, analysis.spans)
     keywords = {entry.keyword for section in analysis.eds.sections for entry in section.entries}
     for span in spans:
@@ -64,3 +67,15 @@ def rename(analysis: Analysis, line: int, column: int, new_name: str) -> list[tu
     if new_name.strip() in keywords:
         raise RenameRefused(f"{new_name.strip()} exists already")
     return [(span_of(span), span.renamed(number)) for span in spans]
+
+
+def _refuse_sequential(analysis: Analysis, target: str, new_name: str) -> None:
+    """Refuse to renumber an entry of a family numbered 1, 2, 3 ... without gaps (spec ``sequential``)."""
+    from edsconv.lsp.hover import entry_spec
+
+    entry = analysis.definitions.get(target)
+    section = next((s.name for s in analysis.eds.sections if any(e is entry for e in s.entries)), None)
+    spec = entry_spec(section, target) if section is not None and entry is not None else None
+    if spec is not None and spec.sequential and new_name != target:
+        raise RenameRefused(f"{spec.keyword}N numbers start at 1 and go up by one ({spec.clause}): {target} "
+                            f"cannot become {new_name} without leaving a gap; move the entries instead")

@@ -1,0 +1,176 @@
+"""What the templates draw besides the document: the drawings, the anchors of the entries, the lint
+verdict with each finding linked to the entry it is about, and the marks of a comparison.
+
+An entry shown on the page has the id ``e-KEYWORD`` (``Param3``, ``Assem100``, ``Connection1``,
+``Group2``, ``Port1``; a side's prefix before it on the comparison page); each part has the id of
+its ``--section`` name.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
+
+from edsconv.diagnostics import Severity
+from edsconv.html.drawing import bit_map, capacity_charts
+
+if TYPE_CHECKING:
+    from edsconv.diagnostics import Diagnostic
+    from edsconv.eds.syntax import EdsFile
+
+#: the part of the page each EDS section's findings link to when its entry has no anchor of its own
+_SECTION_PART = {"File": "identity", "Device": "identity", "Device Classification": "identity",
+                 "ParamClass": "parameters", "Params": "parameters", "EnumParams": "parameters", "Groups": "groups",
+                 "Assembly": "assemblies", "Connection Manager": "connections", "Port": "ports",
+                 "Capacity": "capacity", "Modular": "modular"}
+
+#: the parts that have a heading of their own, with the document keys that make them present
+_PARTS = (("identity", "Identity", ("identity",)), ("parameters", "Parameters", ("parameters",)),
+          ("groups", "Groups", ("groups",)), ("assemblies", "Assemblies", ("assemblies", "extended_assemblies")),
+          ("connections", "Connections", ("connections",)), ("ports", "Ports", ("ports",)),
+          ("capacity", "Capacity", ("capacity",)),
+          ("more", "More", ("modular", "network", "object_classes", "devicenet", "other_sections", "extra_entries")))
+
+
+def _entry_ids(document: dict) -> list[str]:
+    keywords = [p["keyword"] for p in document.get("parameters", ())]
+    keywords += [a["keyword"] for a in (*document.get("assemblies", ()), *document.get("extended_assemblies", ()))]
+    keywords += [c["keyword"] for c in document.get("connections", ())]
+    keywords += [f"Group{g['number']}" for g in document.get("groups", ())]
+    keywords += [f"Port{p['number']}" for p in document.get("ports", ())]
+    return keywords
+
+
+def identity_rows(document: dict) -> list[tuple[str, str, str]]:
+    """(label, what a comparison calls the field, the text) of the identity table."""
+    from edsconv.html.text import cell, revision
+
+    identity, file = document.get("identity"), document.get("file")
+    if not identity or not file:
+        return []
+    networks = ", ".join(" ".join([c["classification"] or "?", *c["subclassifications"]])
+                         for c in document.get("classifications", ()))
+    return [
+        ("Product", "identity.product_name", cell(identity["product_name"])),
+        ("Vendor", "identity.vendor_code|identity.vendor_name", " ".join(filter(None, (cell(identity["vendor_code"]),
+                                                                   cell(identity["vendor_name"]))))),
+        ("Product type", "identity.product_type|identity.product_type_string", " ".join(filter(None, (cell(identity["product_type"]),
+                                                                         cell(identity["product_type_string"]))))),
+        ("Product code", "identity.product_code", cell(identity["product_code"])),
+        ("Revision", "identity.major_revision|identity.minor_revision", revision(identity["major_revision"], identity["minor_revision"])),
+        ("Catalog", "identity.catalog", cell(identity["catalog"])),
+        ("Icon file", "identity.icon", cell(identity["icon"])),
+        ("Networks", "Class1", networks),
+        ("Description", "file.description", cell(file["description"])),
+        ("File revision", "file.revision", cell(file["revision"])),
+        ("Created", "file.create_date|file.create_time", " ".join(filter(None, (file["create_date"], file["create_time"])))),
+        ("Modified", "file.mod_date|file.mod_time", " ".join(filter(None, (file["mod_date"], file["mod_time"])))),
+        ("Home URL", "file.home_url", cell(file["home_url"])),
+    ]
+
+
+def device_view(document: dict, prefix: str, marks: dict[str, str]) -> dict:
+    """The document with what its templates look up: entries by keyword, drawings, anchors, parts."""
+    parameters = {p["keyword"]: p for p in document.get("parameters", ())}
+    assemblies = {a["keyword"]: a for a in (*document.get("assemblies", ()), *document.get("extended_assemblies", ()))}
+    parts = [(key, title) for key, title, keys in _PARTS if any(document.get(k) for k in keys)]
+    return {
+        "doc": document, "prefix": prefix, "marks": marks, "parameters": parameters, "assemblies": assemblies,
+        "maps": {keyword: bit_map(assembly, parameters) for keyword, assembly in assemblies.items()},
+        "charts": capacity_charts(document.get("capacity")), "parts": parts, "identity": identity_rows(document),
+        "anchors": {f"{prefix}e-{keyword}" for keyword in _entry_ids(document)} | {prefix + key for key, _ in parts},
+    }
+
+
+def _target(eds: EdsFile | None, diagnostic: Diagnostic, anchors: set[str]) -> tuple[str | None, str]:
+    """The anchor of the entry (else the part) a finding is about, and the words of the link."""
+    if eds is None or diagnostic.line <= 0:
+        return None, ""
+    from edsconv.eds.locate import locate
+
+    spot = locate(eds, diagnostic.line, max(diagnostic.column, 1))
+    if spot.section is None:
+        return None, ""
+    if spot.entry is not None:
+        keyword = spot.entry.keyword
+        if spot.section.name == "EnumParams":  # EnumN lists the values of ParamN (C.4.1.4.6)
+            keyword = keyword.replace("Enum", "Param", 1)
+        if f"e-{keyword}" in anchors:
+            return f"e-{keyword}", keyword
+    part = _SECTION_PART.get(spot.section.name)
+    if part in anchors:
+        return part, f"[{spot.section.name}]"
+    return None, f"[{spot.section.name}]"
+
+
+def verdict(diagnostics: Iterable[Diagnostic], eds: EdsFile | None, anchors: set[str]) -> dict:
+    """The lint verdict: counts by severity and every finding, linked to its entry where the page shows it."""
+    findings = []
+    for d in sorted(diagnostics, key=lambda d: (d.line, d.column)):
+        href, where = _target(eds, d, anchors)
+        findings.append({"severity": str(d.severity), "code": d.code, "line": d.line, "column": d.column,
+                         "message": d.message, "clause": d.clause, "href": href, "where": where})
+    counts = Counter(f["severity"] for f in findings)
+    order = [str(s) for s in sorted(Severity, reverse=True)]
+    return {"findings": findings, "counts": [(name, counts[name]) for name in order if counts[name]],
+            "worst": findings and min(order.index(f["severity"]) for f in findings)}
+
+
+def icon_uri(data: bytes | None) -> str | None:
+    """The icon as a data: URI, for an ICO, BMP or PNG file; None for other bytes (no broken image)."""
+    import base64
+
+    if not data:
+        return None
+    if data[:4] == b"\0\0\1\0":
+        mime = "image/x-icon"
+    elif data[:2] == b"BM":
+        mime = "image/bmp"
+    elif data[:8] == b"\x89PNG\r\n\x1a\n":
+        mime = "image/png"
+    else:
+        return None
+    return f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
+
+
+# --- the comparison page -------------------------------------------------------------------------
+
+
+def mark(marks: dict[str, str], keyword: str, *fields: str) -> str:
+    """The mark ("added", "removed", "changed") of an entry's field among ``fields`` (of the entry itself for
+    none); ``keyword`` may name several, separated by ``|``. Empty when nothing is marked."""
+    for name in keyword.split("|"):
+        for key in [f"{name} {field}" for field in fields] if fields else [name]:
+            if key in marks:
+                return marks[key]
+    return ""
+
+
+
+def _keyword(what: str) -> str:
+    """The entry a change is about: ``Param3`` of ``Param3 default``; ``identity.product_code`` whole."""
+    return what.split(" ", 1)[0]
+
+
+def marks(changes: list[dict], side: str) -> dict[str, str]:
+    """What to mark on one side ("old" or "new"): each changed field by its ``what``, and its entry."""
+    hidden = "added" if side == "old" else "removed"
+    result: dict[str, str] = {}
+    for change in changes:
+        if change["kind"] == hidden:
+            continue
+        result[change["what"]] = change["kind"]
+        result.setdefault(_keyword(change["what"]), "changed")
+    return result
+
+
+def change_rows(changes: list[dict], old_anchors: set[str], new_anchors: set[str]) -> list[dict]:
+    """The changes with links to their entry on each side, where it is shown."""
+    rows = []
+    for change in changes:
+        keyword = _keyword(change["what"])
+        old, new = f"a-e-{keyword}", f"b-e-{keyword}"
+        rows.append({**change, "old_href": old if old in old_anchors else None,
+                     "new_href": new if new in new_anchors else None})
+    return rows

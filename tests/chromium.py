@@ -126,11 +126,13 @@ class Chromium:
             raise RuntimeError(result["exceptionDetails"].get("text"))
         return result["result"].get("value")
 
-    def screenshot(self, width: int, height: int, dark: bool = False) -> bytes:
+    def screenshot(self, width: int, height: int, dark: bool = False, scroll_to: str = "body") -> bytes:
+        """The viewport of ``width`` x ``height`` pixels, the element ``scroll_to`` selects at its top."""
         self.call("Emulation.setDeviceMetricsOverride", session=True, width=width, height=height,
                   deviceScaleFactor=1, mobile=False)
         self.call("Emulation.setEmulatedMedia", session=True,
                   features=[{"name": "prefers-color-scheme", "value": "dark" if dark else "light"}])
+        self.evaluate(f"document.querySelector({json.dumps(scroll_to)}).scrollIntoView()")
         data = self.call("Page.captureScreenshot", session=True, format="png")["data"]
         return base64.b64decode(data)
 

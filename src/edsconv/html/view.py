@@ -70,14 +70,23 @@ def identity_rows(document: dict) -> list[tuple[str, str, str]]:
     ]
 
 
+def _formats(connections: list[dict], maps: dict[str, dict | None]) -> list[dict]:
+    """The connection formats that are assemblies with a drawing: (connection, direction, format)."""
+    return [{"connection": c, "direction": arrow, "format": endpoint["format"]}
+            for c in connections for direction, arrow in (("O=>T", "O→T"), ("T=>O", "T→O"))
+            if (endpoint := c[direction]) and endpoint["format"] and endpoint["format"].get("kind") == "assembly"
+            and maps.get(endpoint["format"]["keyword"])]
+
+
 def device_view(document: dict, prefix: str, marks: dict[str, str]) -> dict:
     """The document with what its templates look up: entries by keyword, drawings, anchors, parts."""
     parameters = {p["keyword"]: p for p in document.get("parameters", ())}
     assemblies = {a["keyword"]: a for a in (*document.get("assemblies", ()), *document.get("extended_assemblies", ()))}
     parts = [(key, title) for key, title, keys in _PARTS if any(document.get(k) for k in keys)]
+    maps = {keyword: bit_map(assembly, parameters) for keyword, assembly in assemblies.items()}
     return {
         "doc": document, "prefix": prefix, "marks": marks, "parameters": parameters, "assemblies": assemblies,
-        "maps": {keyword: bit_map(assembly, parameters) for keyword, assembly in assemblies.items()},
+        "maps": maps, "formats": _formats(document.get("connections", []), maps),
         "charts": capacity_charts(document.get("capacity")), "parts": parts, "identity": identity_rows(document),
         "anchors": {f"{prefix}e-{keyword}" for keyword in _entry_ids(document)} | {prefix + key for key, _ in parts},
     }

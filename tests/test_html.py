@@ -18,8 +18,8 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from conftest import REPO, SHARED_REAL
 
+from conftest import REPO, SHARED_REAL
 from edsconv import analyse, parse
 from edsconv.cli import cli
 from edsconv.describe import describe
@@ -82,8 +82,8 @@ def test_page_is_self_contained_and_escaped() -> None:
 def test_parameters_table_holds_every_parameter_with_its_range() -> None:
     page = page_of_text(MINIMAL.format(name="Speed"))
     row = re.search(r'<tr id="e-Param1">(.*?)</tr>', page).group(1)
-    assert re.findall(r"<td>(.*?)</td>", row) == ["Param1", "Speed", "UINT, 2 B", "5", "0 .. 100", "ms", "help &lt;b&gt;",
-                                                  ""]
+    cells = ["Param1", "Speed", "UINT, 2 B", "5", "0 .. 100", "ms", "help &lt;b&gt;", ""]
+    assert re.findall(r"<td>(.*?)</td>", row) == cells
     assert 'id="e-Param2"' in page and "data-sortable" in page
 
 

@@ -18,7 +18,7 @@ from edsconv.model.build import build
 @click.argument("new_file", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--format", "output_format", type=click.Choice(["text", "json", "html"]), default="text",
               help="text: changes grouped by category; json: a list of changes; html: the two devices side by "
-                   "side, the changes marked (docs/show.md).")
+                   "side, the changes marked.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False, path_type=Path), metavar="FILE",
               help="With --format html: write the page to FILE instead of standard output.")
 def diff_command(old_file: Path, new_file: Path, output_format: str, output: Path | None) -> int:

@@ -49,7 +49,7 @@ def _section_names(ctx: click.Context, param: click.Parameter, value: tuple[str,
               help=f"Show only these parts (repeat or comma-separate): {', '.join(SECTIONS)}.")
 @click.option("--format", "output_format", type=click.Choice(["text", "json", "html"]), default="text",
               show_default=True, help="text: tables for people; json: the same content for programs; html: one "
-                                      "self-contained page with drawings (docs/show.md).")
+                                      "self-contained page with drawings.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False, path_type=Path), metavar="FILE",
               help="Write to FILE instead of standard output.")
 @click.option("--icon", "icon_file", type=click.Path(dir_okay=False, path_type=Path), metavar="FILE",

@@ -42,31 +42,38 @@ def _entry_ids(document: dict) -> list[str]:
     return keywords
 
 
+def _joined(*values: object) -> str:
+    from edsconv.html.text import cell
+
+    return " ".join(filter(None, map(cell, values)))
+
+
 def identity_rows(document: dict) -> list[tuple[str, str, str]]:
-    """(label, what a comparison calls the field, the text) of the identity table."""
-    from edsconv.html.text import cell, revision
+    """(label, what a comparison calls the field(s), separated by ``|``, the text) of the identity facts."""
+    from edsconv.html.text import revision
 
     identity, file = document.get("identity"), document.get("file")
     if not identity or not file:
         return []
-    networks = ", ".join(" ".join([c["classification"] or "?", *c["subclassifications"]])
+    networks = ", ".join(_joined(c["classification"] or "?", *c["subclassifications"])
                          for c in document.get("classifications", ()))
+    i, f = identity, file
     return [
-        ("Product", "identity.product_name", cell(identity["product_name"])),
-        ("Vendor", "identity.vendor_code|identity.vendor_name", " ".join(filter(None, (cell(identity["vendor_code"]),
-                                                                   cell(identity["vendor_name"]))))),
-        ("Product type", "identity.product_type|identity.product_type_string", " ".join(filter(None, (cell(identity["product_type"]),
-                                                                         cell(identity["product_type_string"]))))),
-        ("Product code", "identity.product_code", cell(identity["product_code"])),
-        ("Revision", "identity.major_revision|identity.minor_revision", revision(identity["major_revision"], identity["minor_revision"])),
-        ("Catalog", "identity.catalog", cell(identity["catalog"])),
-        ("Icon file", "identity.icon", cell(identity["icon"])),
-        ("Networks", "Class1", networks),
-        ("Description", "file.description", cell(file["description"])),
-        ("File revision", "file.revision", cell(file["revision"])),
-        ("Created", "file.create_date|file.create_time", " ".join(filter(None, (file["create_date"], file["create_time"])))),
-        ("Modified", "file.mod_date|file.mod_time", " ".join(filter(None, (file["mod_date"], file["mod_time"])))),
-        ("Home URL", "file.home_url", cell(file["home_url"])),
+        ("Product", "identity.product_name", _joined(i["product_name"])),
+        ("Vendor", "identity.vendor_code|identity.vendor_name", _joined(i["vendor_code"], i["vendor_name"])),
+        ("Product type", "identity.product_type|identity.product_type_string",
+         _joined(i["product_type"], i["product_type_string"])),
+        ("Product code", "identity.product_code", _joined(i["product_code"])),
+        ("Revision", "identity.major_revision|identity.minor_revision",
+         revision(i["major_revision"], i["minor_revision"])),
+        ("Catalog", "identity.catalog", _joined(i["catalog"])),
+        ("Icon file", "identity.icon", _joined(i["icon"])),
+        ("Networks", "Class1|Class2|Class3|Class4", networks),
+        ("Description", "file.description", _joined(f["description"])),
+        ("File revision", "file.revision", _joined(f["revision"])),
+        ("Created", "file.create_date|file.create_time", _joined(f["create_date"], f["create_time"])),
+        ("Modified", "file.mod_date|file.mod_time", _joined(f["mod_date"], f["mod_time"])),
+        ("Home URL", "file.home_url", _joined(f["home_url"])),
     ]
 
 
@@ -122,8 +129,7 @@ def verdict(diagnostics: Iterable[Diagnostic], eds: EdsFile | None, anchors: set
                          "message": d.message, "clause": d.clause, "href": href, "where": where})
     counts = Counter(f["severity"] for f in findings)
     order = [str(s) for s in sorted(Severity, reverse=True)]
-    return {"findings": findings, "counts": [(name, counts[name]) for name in order if counts[name]],
-            "worst": findings and min(order.index(f["severity"]) for f in findings)}
+    return {"findings": findings, "counts": [(name, counts[name]) for name in order if counts[name]]}
 
 
 def icon_uri(data: bytes | None) -> str | None:

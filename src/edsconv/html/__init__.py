@@ -15,7 +15,7 @@ from collections.abc import Iterable
 from functools import cache
 from typing import TYPE_CHECKING
 
-from edsconv.html import text, view
+from edsconv.html import drawing, text, view
 
 if TYPE_CHECKING:
     import jinja2
@@ -33,7 +33,7 @@ def environment() -> jinja2.Environment:
                              trim_blocks=True, lstrip_blocks=True, undefined=jinja2.StrictUndefined)
     env.filters.update(cell=text.cell, type_text=text.type_text, member_text=text.member_text,
                        endpoint_text=text.endpoint_text, path_text=text.path_text, reference_text=text.reference_text)
-    env.globals.update(value_range=text.value_range, bits_text=text.bits_text, mark=view.mark)
+    env.globals.update(value_range=text.value_range, bits_text=text.bits_text, mark=view.mark, rulers=drawing.rulers())
     return env
 
 

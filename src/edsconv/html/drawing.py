@@ -13,18 +13,29 @@ from typing import Any
 from edsconv.html.text import member_label, member_title
 
 #: the drawing width of one row of bits, and the margin at its left for the byte offsets
-ROW_WIDTH = 512
+ROW_WIDTH = 768
 LEFT = 64
 ROW_HEIGHT = 28
 #: the average width of a character of the labels (12 px sans-serif), to decide whether a label fits
-CHAR_WIDTH = 7
+CHAR_WIDTH = 6.4
+
+
+#: the bits of a row a map may have; a map of many bits takes the wider rows, so that it stays short
+ROW_BITS = (32, 64, 128)
+
+
+def rulers() -> list[dict]:
+    """The shared parts of every map of ``bits`` per row: its bit numbers, and the grid of its bytes and rows."""
+    result = []
+    for bits in ROW_BITS:
+        step = ROW_WIDTH // (bits // 8)
+        result.append({"bits": bits, "step": step, "height": ROW_HEIGHT, "left": LEFT,
+                       "ticks": [{"x": LEFT + byte * step + 2, "bit": byte * 8} for byte in range(bits // 8)]})
+    return result
 
 
 def _row_bits(total: int) -> int:
-    for bits in (32, 64):
-        if total <= bits * 32:
-            return bits
-    return 128
+    return next((bits for bits in ROW_BITS[:-1] if total <= bits * 32), ROW_BITS[-1])
 
 
 def _number(value: float) -> float | int:
@@ -70,9 +81,9 @@ def bit_map(assembly: dict, parameters: dict[str, dict]) -> dict | None:
                        "title": member_title(member, parameters.get(what.get("keyword", ""))),
                        "keyword": what.get("keyword") if what["kind"] in ("parameter", "assembly") else None})
     rows = -(-end // row_bits)
-    return {"width": LEFT + ROW_WIDTH + 2, "height": rows * ROW_HEIGHT + 22, "blocks": blocks,
+    return {"width": LEFT + ROW_WIDTH + 2, "height": rows * ROW_HEIGHT + 22, "blocks": blocks, "left": LEFT,
+            "row_width": ROW_WIDTH,
             "rows": [{"y": row * ROW_HEIGHT + 18, "byte": row * row_bits // 8} for row in range(rows)],
-            "ticks": [{"x": _number(LEFT + bit * bit_width), "bit": bit} for bit in range(0, row_bits, 8)],
             "row_bits": row_bits, "bit_width": bit_width, "rows_count": rows}
 
 

@@ -121,8 +121,8 @@ Connection1 = 0x04010002, 0x44640405, 1000,,Assem1, 1000,,Assem2, ,, ,, "IO", ""
 """
     page = page_of_text(text)
     assert re.search(r'<details class="nested"><summary>Nested Assem1 “In”, bits 0-31</summary>\n'
-                     r'<figure class="bitmap"><svg[^>]*><use href="#map-Assem1"/>', page)
-    assert '<use href="#map-Assem2"/>' in page and "T→O format Assem2" in page
+                     r'<svg[^>]*><use href="#map-Assem1"/>', page)
+    assert '<use href="#map-Assem2"/>' in page and "Connection1 T→O: Assem2 “Outer”" in page
 
 
 def test_diff_page_marks_the_changed_field_on_both_sides() -> None:

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from edsconv.diagnostics import Severity
 from edsconv.html.drawing import bit_map, capacity_charts
+from edsconv.html.text import bits_text, cell, endpoint_text, member_text, reference_text
 
 if TYPE_CHECKING:
     from edsconv.diagnostics import Diagnostic
@@ -78,11 +79,68 @@ def identity_rows(document: dict) -> list[tuple[str, str, str]]:
 
 
 def _formats(connections: list[dict], maps: dict[str, dict | None]) -> list[dict]:
-    """The connection formats that are assemblies with a drawing: (connection, direction, format)."""
-    return [{"connection": c, "direction": arrow, "format": endpoint["format"]}
-            for c in connections for direction, arrow in (("O=>T", "O→T"), ("T=>O", "T→O"))
-            if (endpoint := c[direction]) and endpoint["format"] and endpoint["format"].get("kind") == "assembly"
-            and maps.get(endpoint["format"]["keyword"])]
+    """The connection formats that are assemblies with a drawing: their keyword and the words that name them."""
+    formats = []
+    for c in connections:
+        for direction, arrow in (("O=>T", "O→T"), ("T=>O", "T→O")):
+            endpoint = c[direction]
+            ref = endpoint and endpoint["format"]
+            if ref and ref.get("kind") == "assembly" and maps.get(ref["keyword"]):
+                name = f" “{ref['name']}”" if ref.get("name") else ""
+                formats.append({"keyword": ref["keyword"], "summary": f"{c['keyword']} {arrow}: {ref['keyword']}{name}"})
+    return formats
+
+
+def _trigger_text(tt: dict | None) -> str:
+    if not tt:
+        return ""
+    if tt.get("classes") is None:
+        return cell(tt["value"])
+    return "; ".join((", ".join(tt["triggers"]) or "no trigger", ", ".join(tt["class_names"]) or "no class",
+                      ", ".join(tt["transport"]), tt["role"]))
+
+
+def _endpoint_rows(endpoint: dict | None) -> list[tuple[str, str]] | None:
+    """(label, text) of a direction's RPI, size and format; None when the connection does not use it."""
+    if not endpoint:
+        return None
+    rows = [("RPI", endpoint_text(endpoint.get("rpi"), " µs")), ("size", endpoint_text(endpoint["size"], " bytes")),
+            ("format", reference_text(endpoint["format"]))]
+    return [(label, text) for label, text in rows if text]
+
+
+def _connection_rows(connections: list[dict], marks: dict[str, str]) -> list[dict]:
+    """The cells of the connections table, each with its mark on the comparison page."""
+    rows = []
+    for c in connections:
+        keyword, path = c["keyword"], c["path"]
+        summary = path and path.get("summary")
+        rows.append({
+            "keyword": keyword, "name": c["name"], "trigger": _trigger_text(c["trigger_transport"]),
+            "o_to_t": _endpoint_rows(c["O=>T"]), "t_to_o": _endpoint_rows(c["T=>O"]),
+            "path": path["text"] if path else "", "summary": summary if summary and summary != path["text"] else "",
+            "marks": {} if not marks else {  # empty marks print no class attribute
+                "row": mark(marks, keyword), "trigger": mark(marks, keyword, "trigger_transport"),
+                "o_to_t": mark(marks, keyword, "O=>T RPI", "O=>T size", "O=>T format"),
+                "t_to_o": mark(marks, keyword, "T=>O RPI", "T=>O size", "T=>O format"),
+                "path": mark(marks, keyword, "path")},
+        })
+    return rows
+
+
+def _member_rows(assembly: dict, prefix: str, anchors: set[str], marks: dict[str, str]) -> list[dict]:
+    """The member list of an assembly: bits, size, the link to the member's entry and the rest of its text."""
+    rows = []
+    for index, member in enumerate(assembly["members"], 1):
+        what = member["member"]
+        keyword = what.get("keyword") if what["kind"] in ("parameter", "assembly") else None
+        href = f"{prefix}e-{keyword}" if keyword and f"{prefix}e-{keyword}" in anchors else None
+        words = member_text(what)
+        rows.append({"bits": bits_text(member["offset"], member["bits"]), "size": cell(member["bits"]) or "?",
+                     "href": href, "keyword": keyword if href else None,
+                     "rest": words[len(keyword):] if href and keyword and words.startswith(keyword) else words,
+                     "mark": mark(marks, f"{assembly['keyword']} member {index}") if marks else ""})
+    return rows
 
 
 def device_view(document: dict, prefix: str, marks: dict[str, str]) -> dict:
@@ -90,41 +148,55 @@ def device_view(document: dict, prefix: str, marks: dict[str, str]) -> dict:
     parameters = {p["keyword"]: p for p in document.get("parameters", ())}
     assemblies = {a["keyword"]: a for a in (*document.get("assemblies", ()), *document.get("extended_assemblies", ()))}
     parts = [(key, title) for key, title, keys in _PARTS if any(document.get(k) for k in keys)]
+    anchors = {f"{prefix}e-{keyword}" for keyword in _entry_ids(document)} | {prefix + key for key, _ in parts}
     maps = {keyword: bit_map(assembly, parameters) for keyword, assembly in assemblies.items()}
+    for drawing in filter(None, maps.values()):
+        for block in drawing["blocks"]:
+            block["href"] = f"{prefix}e-{block['keyword']}" if f"{prefix}e-{block['keyword']}" in anchors else None
     return {
         "doc": document, "prefix": prefix, "marks": marks, "parameters": parameters, "assemblies": assemblies,
-        "maps": maps, "formats": _formats(document.get("connections", []), maps),
+        "maps": maps, "formats": _formats(document.get("connections", []), maps), "anchors": anchors,
+        "connections": _connection_rows(document.get("connections", []), marks),
+        "members": {keyword: _member_rows(a, prefix, anchors, marks) for keyword, a in assemblies.items()},
         "charts": capacity_charts(document.get("capacity")), "parts": parts, "identity": identity_rows(document),
-        "anchors": {f"{prefix}e-{keyword}" for keyword in _entry_ids(document)} | {prefix + key for key, _ in parts},
     }
 
 
-def _target(eds: EdsFile | None, diagnostic: Diagnostic, anchors: set[str]) -> tuple[str | None, str]:
-    """The anchor of the entry (else the part) a finding is about, and the words of the link."""
-    if eds is None or diagnostic.line <= 0:
-        return None, ""
-    from edsconv.eds.locate import locate
+def _places(eds: EdsFile) -> tuple[list[int], list[tuple[str, str | None]]]:
+    """The first line of every section and entry, in file order, and (section, keyword or None) of each."""
+    lines, places = [], []
+    for section in eds.sections:
+        lines.append(section.line)
+        places.append((section.name, None))
+        for entry in section.entries:
+            lines.append(entry.line)
+            places.append((section.name, entry.keyword))
+    return lines, places
 
-    spot = locate(eds, diagnostic.line, max(diagnostic.column, 1))
-    if spot.section is None:
+
+def _target(place: tuple[str, str | None] | None, anchors: set[str]) -> tuple[str | None, str]:
+    """The anchor of the entry (else the part) a finding is about, and the words of the link."""
+    if place is None:
         return None, ""
-    if spot.entry is not None:
-        keyword = spot.entry.keyword
-        if spot.section.name == "EnumParams":  # EnumN lists the values of ParamN (C.4.1.4.6)
+    section, keyword = place
+    if keyword is not None:
+        if section == "EnumParams":  # EnumN lists the values of ParamN (C.4.1.4.6)
             keyword = keyword.replace("Enum", "Param", 1)
         if f"e-{keyword}" in anchors:
             return f"e-{keyword}", keyword
-    part = _SECTION_PART.get(spot.section.name)
-    if part in anchors:
-        return part, f"[{spot.section.name}]"
-    return None, f"[{spot.section.name}]"
+    part = _SECTION_PART.get(section)
+    return (part if part in anchors else None), f"[{section}]"
 
 
 def verdict(diagnostics: Iterable[Diagnostic], eds: EdsFile | None, anchors: set[str]) -> dict:
     """The lint verdict: counts by severity and every finding, linked to its entry where the page shows it."""
+    import bisect
+
+    lines, places = _places(eds) if eds is not None else ([], [])
     findings = []
     for d in sorted(diagnostics, key=lambda d: (d.line, d.column)):
-        href, where = _target(eds, d, anchors)
+        at = bisect.bisect_right(lines, d.line) - 1 if d.line > 0 else -1
+        href, where = _target(places[at] if at >= 0 else None, anchors)
         findings.append({"severity": str(d.severity), "code": d.code, "line": d.line, "column": d.column,
                          "message": d.message, "clause": d.clause, "href": href, "where": where})
     counts = Counter(f["severity"] for f in findings)

@@ -19,9 +19,8 @@ import tempfile
 from pathlib import Path
 
 from common import CORPUS, best_of, corpus_files
-from generate import generate
-
 from edsconv import cli
+from generate import generate
 
 
 def run(*arguments: str) -> None:

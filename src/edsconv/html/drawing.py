@@ -79,7 +79,8 @@ def bit_map(assembly: dict, parameters: dict[str, dict]) -> dict | None:
             segment["label"] = _fitted(label, segment["w"])
         blocks.append({"kind": what["kind"], "shade": index % 2, "segments": segments,
                        "title": member_title(member, parameters.get(what.get("keyword", ""))),
-                       "keyword": what.get("keyword") if what["kind"] in ("parameter", "assembly") else None, "href": None})
+                       "keyword": what.get("keyword") if what["kind"] in ("parameter", "assembly") else None,
+                       "href": None})  # the view links the block when its entry is on the page
     rows = -(-end // row_bits)
     return {"width": LEFT + ROW_WIDTH + 2, "height": rows * ROW_HEIGHT + 22, "blocks": blocks, "left": LEFT,
             "row_width": ROW_WIDTH,

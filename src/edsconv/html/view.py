@@ -87,7 +87,8 @@ def _formats(connections: list[dict], maps: dict[str, dict | None]) -> list[dict
             ref = endpoint and endpoint["format"]
             if ref and ref.get("kind") == "assembly" and maps.get(ref["keyword"]):
                 name = f" “{ref['name']}”" if ref.get("name") else ""
-                formats.append({"keyword": ref["keyword"], "summary": f"{c['keyword']} {arrow}: {ref['keyword']}{name}"})
+                summary = f"{c['keyword']} {arrow}: {ref['keyword']}{name}"
+                formats.append({"keyword": ref["keyword"], "summary": summary})
     return formats
 
 
@@ -164,7 +165,8 @@ def device_view(document: dict, prefix: str, marks: dict[str, str]) -> dict:
 
 def _places(eds: EdsFile) -> tuple[list[int], list[tuple[str, str | None]]]:
     """The first line of every section and entry, in file order, and (section, keyword or None) of each."""
-    lines, places = [], []
+    lines: list[int] = []
+    places: list[tuple[str, str | None]] = []
     for section in eds.sections:
         lines.append(section.line)
         places.append((section.name, None))

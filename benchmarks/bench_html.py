@@ -19,7 +19,7 @@ import tempfile
 from pathlib import Path
 
 from common import CORPUS, best_of, corpus_files
-from edsconv import cli
+from edsconv.cli import cli
 from generate import generate
 
 

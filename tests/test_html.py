@@ -96,7 +96,7 @@ def test_bit_map_sizes_members_by_their_bits_and_shows_padding() -> None:
     assert [(kind, float(x), float(w)) for kind, _, x, w in blocks] == [
         ("parameter", LEFT, 16 * bit), ("pad", LEFT + 16 * bit, 8 * bit), ("parameter", LEFT + 24 * bit, 8 * bit)]
     title = blocks[0][1]
-    assert "Param1" in title and "bits 0-15" in title and "range 0 .. 100" in title and "help &lt;b&gt;" in title
+    assert title == "Param1 Speed, bits 0-15\nUINT, 2 B; range 0 .. 100; default 5 ms\nhelp &lt;b&gt;"
     assert '<a href="#e-Param1">' in drawing  # a block leads to its parameter
 
 
@@ -112,6 +112,21 @@ def test_icon_is_an_inline_image_when_the_file_has_one() -> None:
     with_icon = next(path for path in sorted(REPO.glob("corpus/**/*.eds")) if b"IconContents" in path.read_bytes())
     page = page_of(with_icon)
     assert re.search(r'<img class="icon" src="data:image/(x-icon|bmp|png);base64,', page)
+
+
+def test_icon_file_beside_the_eds_when_there_is_no_icon_contents(tmp_path: Path) -> None:
+    from edsconv.model.icon import decode_icon
+
+    icon_text = re.search(r'IconContents\s*=\s*((?:"[^"]*"\s*)+);', (REPO / "corpus/cip/icon_clean.eds").read_text())
+    data = decode_icon("".join(re.findall(r'"([^"]*)"', icon_text.group(1)))).data
+    assert data and data[:4] == b"\0\0\1\0"
+    eds = tmp_path / "io_adapter.eds"
+    eds.write_bytes(EXAMPLE.read_bytes())  # its [Device] Icon names io_adapter.ico
+    result = CliRunner().invoke(cli, ["show", str(eds), "--format", "html"])
+    assert '<img class="icon"' not in result.stdout
+    (tmp_path / "io_adapter.ico").write_bytes(data)
+    result = CliRunner().invoke(cli, ["show", str(eds), "--format", "html"])
+    assert '<img class="icon" src="data:image/x-icon;base64,' in result.stdout
 
 
 def test_nested_assembly_and_connection_format_are_drawn_by_reference() -> None:
@@ -252,6 +267,9 @@ def test_nu_html_checker_finds_no_errors(tmp_path: Path) -> None:
         largest = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
         pages.append(tmp_path / "real.html")
         pages[-1].write_text(page_of(largest), encoding="utf-8")
-    checked = subprocess.run(["java", "-Xss4m", "-jar", str(_vnu_jar()), "--errors-only", *map(str, pages)],
-                             capture_output=True, text=True, timeout=120)
+    # content-visibility and contain-intrinsic-size (CSS Containment 2, in every current browser) are newer than
+    # the checker's CSS data; any other message still fails
+    newer = ".*“(content-visibility|contain-intrinsic-size)”: Property “\\1” doesn't exist.*"
+    checked = subprocess.run(["java", "-Xss4m", "-jar", str(_vnu_jar()), "--errors-only", "--filterpattern", newer,
+                              *map(str, pages)], capture_output=True, text=True, timeout=120)
     assert checked.returncode == 0, checked.stderr[:3000]

@@ -94,12 +94,14 @@ def member_title(member: dict, parameter: dict | None) -> str:
     """The hover text of a block: what it is, where, and for a parameter its type, range and help."""
     where = bits_text(member["offset"], member["bits"])
     what = member["member"]
-    lines = [f"{member_text(what)}, {where}"]
-    if parameter is not None:
-        lines.append(f"type {type_text(parameter)}; range {value_range(parameter['minimum'], parameter['maximum'])}"
-                     f"; default {cell(parameter['default'])} {cell(parameter['units'])}".rstrip())
-        if parameter["help"]:
-            lines.append(parameter["help"])
+    if parameter is None:
+        return f"{member_text(what)}, {where}"
+    bit = f" bit {what['bit']}" if what.get("bit") is not None else ""
+    lines = [f"{what['keyword']}{bit} {cell(parameter['name'])}, {where}",
+             f"{type_text(parameter)}; range {value_range(parameter['minimum'], parameter['maximum'])}"
+             f"; default {cell(parameter['default'])} {cell(parameter['units'])}".rstrip()]
+    if parameter["help"]:
+        lines.append(parameter["help"])
     return "\n".join(lines)
 
 

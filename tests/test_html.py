@@ -160,6 +160,9 @@ def test_cli_writes_the_page_to_a_file_or_standard_output(tmp_path: Path) -> Non
         "test.eds", str(EXAMPLE))
     result = CliRunner().invoke(cli, ["show", str(EXAMPLE), "--format", "html"])
     assert result.stdout.startswith("<!DOCTYPE html>")
+    text = tmp_path / "page.txt"  # -o takes the other formats too: the text as piped
+    assert CliRunner().invoke(cli, ["show", str(EXAMPLE), "-o", str(text)]).exit_code == 0
+    assert text.read_text(encoding="utf-8") == CliRunner().invoke(cli, ["show", str(EXAMPLE)]).stdout
     result = CliRunner().invoke(cli, ["diff", str(EXAMPLE), str(EXAMPLE), "--format", "html", "-o", str(target)])
     assert result.exit_code == 0 and "the same device" in target.read_text(encoding="utf-8")
 

@@ -117,6 +117,7 @@ SHAPES: dict[str, tuple] = {
     "dense-params-10k.eds": (lambda: repeated(dense_param), 10000),
     "dense-mixed-1.7mb.eds": (lambda: dense_mixed(2), None),
     "dense-mixed-0.4mb.eds": (lambda: dense_mixed(8), None),
+    "dense-mixed-3mb.eds": (lambda: dense_mixed(1), None),
 }
 
 

@@ -11,7 +11,7 @@ import pytest
 from conftest import REPO
 
 
-@pytest.mark.parametrize("script", ["run_all.py", "bench_lsp.py"])
+@pytest.mark.parametrize("script", ["run_all.py", "bench_lsp.py", "bench_html.py"])
 def test_the_script_starts_and_explains_its_options(script: str) -> None:
     pytest.importorskip("pygls" if script == "bench_lsp.py" else "eds_pie")  # the bench extra's comparison
     result = subprocess.run([sys.executable, str(REPO / "benchmarks" / script), "--help"], capture_output=True,

@@ -72,6 +72,9 @@ def test_lint_fix_that_cannot_write_says_so_keeps_the_findings_and_exits_2(tmp_p
     ["merge", MODULAR / "adapter.eds", MODULAR / "module.eds", "-o", "{out}"],
     ["show", REPO / "corpus" / "cip" / "icon_clean.eds", "--icon", "{out}"],
     ["xml2eds", PROFILE, "-o", "{out}"],
+    ["show", REPO / "corpus" / "examples" / "io_adapter.eds", "--format", "html", "-o", "{out}"],
+    ["diff", REPO / "corpus" / "examples" / "io_adapter.eds", REPO / "corpus" / "cip" / "icon_clean.eds",
+     "--format", "html", "-o", "{out}"],
 ])
 def test_every_writer_refuses_an_existing_file_without_force(tmp_path: Path, command: list) -> None:
     # item 5: merge -o and show --icon overwrote an existing file
@@ -95,7 +98,9 @@ def test_no_writer_writes_over_its_own_input_even_with_force(tmp_path: Path) -> 
     profile.write_bytes(PROFILE.read_bytes())
     for command, target in [(["merge", adapter, module, "-o", tmp_path / "link.eds"], adapter),
                             (["merge", adapter, module, "-o", module], module),
-                            (["show", eds, "--icon", eds], eds), (["xml2eds", profile, "-o", profile], profile)]:
+                            (["show", eds, "--icon", eds], eds), (["xml2eds", profile, "-o", profile], profile),
+                            (["show", eds, "--format", "json", "-o", eds], eds),
+                            (["diff", adapter, module, "--format", "html", "-o", module], module)]:
         before = target.read_bytes()
         result = invoke(*command, "--force")
         assert result.exit_code == 2, command

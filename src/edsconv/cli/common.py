@@ -92,6 +92,18 @@ def writing(path: object | None = None) -> Iterator[None]:
                                      error.strerror or str(error))) from error
 
 
+def emit(text: str, output: Path | None, inputs: Iterable[Path], force: bool) -> None:
+    """``text`` on standard output, or as the whole of ``output`` (never half of it), by the write rule:
+    an existing file only with ``force``, never one of the command's ``inputs``."""
+    if output is None:
+        click.echo(text)
+        return
+    from edsconv.atomic import write_atomically
+
+    with writing(output):
+        write_atomically(output, (text + "\n").encode("utf-8"), inputs=list(inputs), force=force)
+
+
 def cannot_write(path: object, reason: str) -> str:
     """The one line every command prints for a file it cannot write."""
     return f"{path}: cannot write: {reason}"

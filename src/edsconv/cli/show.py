@@ -18,7 +18,16 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from edsconv import analyse, cip_tables
-from edsconv.cli.common import EXIT_CLEAN, CannotRun, counts_line, documentation, read_eds, split_list, writing
+from edsconv.cli.common import (
+    EXIT_CLEAN,
+    CannotRun,
+    counts_line,
+    documentation,
+    emit,
+    read_eds,
+    split_list,
+    writing,
+)
 from edsconv.cli.layout import Page as _Page
 from edsconv.cli.layout import PlainPage, RichPage, Row, json_text
 from edsconv.cli.layout import cell_text as _text
@@ -47,30 +56,54 @@ def _section_names(ctx: click.Context, param: click.Parameter, value: tuple[str,
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--section", "sections", multiple=True, callback=_section_names, metavar="NAME",
               help=f"Show only these parts (repeat or comma-separate): {', '.join(SECTIONS)}.")
-@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True,
-              help="text: tables for people; json: the same content for programs.")
+@click.option("--format", "output_format", type=click.Choice(["text", "json", "html"]), default="text",
+              show_default=True, help="text: tables for people; json: the same content for programs; html: one "
+                                      "self-contained page with drawings.")
+@click.option("-o", "--output", "output", type=click.Path(dir_okay=False, path_type=Path), metavar="FILE",
+              help="Write to FILE instead of standard output.")
 @click.option("--icon", "icon_file", type=click.Path(dir_okay=False, path_type=Path), metavar="FILE",
               help="Also write the icon IconContents holds (decoded from base64) to FILE.")
-@click.option("--force", is_flag=True, help="Overwrite an existing icon file (never the EDS itself).")
-def show_command(file: Path, sections: tuple[str, ...], output_format: str, icon_file: Path | None,
-                 force: bool) -> int:
+@click.option("--force", is_flag=True, help="Overwrite an existing output or icon file (never the EDS itself).")
+def show_command(file: Path, sections: tuple[str, ...], output_format: str, output: Path | None,
+                 icon_file: Path | None, force: bool) -> int:
     """Show what an EDS says about a device: identity, parameters, assemblies, connections, ports, modules.
 
     Exit 0 whenever the file could be read, even when it has errors: their count goes to
     standard error and 'edsconv lint' lists them. Exit 2 when the file cannot be read.
     """
-    device, diagnostics = analyse(read_eds(file))
+    eds = read_eds(file)
+    device, diagnostics = analyse(eds)
+    icon = device.icon_contents.data if device.icon_contents else None
     if icon_file is not None:
-        _write_icon(file, device.icon_contents.data if device.icon_contents else None, icon_file, force)
+        _write_icon(file, icon, icon_file, force)
     with paused_gc():  # the document is many small objects and no cycles, as the model is
         document = select(describe(device), sections)
-        if output_format == "json":
-            click.echo(json_text(document))
+        if output_format == "html":
+            from edsconv.html import show_page
+
+            emit(show_page(document, str(file), diagnostics, eds, icon or _icon_file(file, document)), output, [file],
+                 force)
+        elif output_format == "json":
+            emit(json_text(document), output, [file], force)
+        elif output is not None:
+            emit(plain_text(document, sections), output, [file], force)
         else:
             print_text(document, sections)
     if any(d.severity >= Severity.WARNING for d in diagnostics):
         click.echo(counts_line(str(file), diagnostics, notes=False) + f" (see 'edsconv lint {file}')", err=True)
     return EXIT_CLEAN
+
+
+def _icon_file(file: Path, document: dict) -> bytes | None:
+    """The file [Device] Icon names beside the EDS (C.4.1.4.3), when there is one of a sensible size."""
+    name = (document.get("identity") or {}).get("icon")
+    if not isinstance(name, str) or not name:
+        return None
+    path = file.parent / Path(name).name
+    try:
+        return path.read_bytes() if path.is_file() and path.stat().st_size <= 1 << 20 else None
+    except OSError:
+        return None
 
 
 def _write_icon(file: Path, data: bytes | None, target: Path, force: bool) -> None:

@@ -1,0 +1,55 @@
+"""``show --format html`` and ``diff --format html``: a device as one self-contained HTML page.
+
+The page is made from the same :func:`~edsconv.describe.describe` document the text and JSON of
+``show`` print, so all three say the same thing; the markup lives in Jinja2 templates
+(``templates/``, autoescaped), the few computed parts (the geometry of the drawings, the links of
+the lint findings, the marks of a comparison) in :mod:`edsconv.html.view` and
+:mod:`edsconv.html.drawing`. Styles, the small script (sorting and filtering the parameters) and
+the icon are inside the page: it opens from a file, needs no network, and its content reads with
+JavaScript off.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from functools import cache
+from typing import TYPE_CHECKING
+
+from edsconv.html import drawing, text, view
+
+if TYPE_CHECKING:
+    import jinja2
+
+    from edsconv.diagnostics import Diagnostic
+    from edsconv.eds.syntax import EdsFile
+
+
+@cache
+def environment() -> jinja2.Environment:
+    """The templates, autoescaped; blocks trimmed so the page carries no blank lines of template logic."""
+    import jinja2
+
+    env = jinja2.Environment(loader=jinja2.PackageLoader("edsconv.html", "templates"), autoescape=True,
+                             trim_blocks=True, lstrip_blocks=True, undefined=jinja2.StrictUndefined)
+    env.filters.update(cell=text.cell, type_text=text.type_text, member_text=text.member_text,
+                       endpoint_text=text.endpoint_text, path_text=text.path_text, reference_text=text.reference_text)
+    env.globals.update(value_range=text.value_range, bits_text=text.bits_text, mark=view.mark, rulers=drawing.rulers())
+    return env
+
+
+def show_page(document: dict, title: str, diagnostics: Iterable[Diagnostic] = (), eds: EdsFile | None = None,
+              icon: bytes | None = None) -> str:
+    """The page of one device: the ``show`` document, the lint verdict on ``eds`` and its icon."""
+    device = view.device_view(document, "", {})
+    return environment().get_template("show.html.j2").render(
+        title=title, device=device, verdict=view.verdict(diagnostics, eds, device["anchors"]),
+        icon=view.icon_uri(icon))
+
+
+def diff_page(old: dict, new: dict, changes: list[dict], old_title: str, new_title: str) -> str:
+    """The review page of two devices side by side, each change marked on both sides."""
+    old_marks, new_marks = view.marks(changes, "old"), view.marks(changes, "new")
+    old_view, new_view = view.device_view(old, "a-", old_marks), view.device_view(new, "b-", new_marks)
+    rows = view.change_rows(changes, old_view["anchors"], new_view["anchors"])
+    return environment().get_template("diff.html.j2").render(
+        old_title=old_title, new_title=new_title, old=old_view, new=new_view, changes=rows)

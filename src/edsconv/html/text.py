@@ -1,0 +1,121 @@
+"""The short texts of the page's cells, labels and hover titles, from parts of the ``show`` document.
+
+The templates escape them (Jinja2 autoescaping); these functions only choose the words.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+
+def cell(value: Any) -> str:
+    """A value as a cell shows it: nothing for None, floats short, lists comma-separated."""
+    if value is None:
+        return ""
+    if isinstance(value, float):
+        return f"{value:g}"
+    if isinstance(value, list):
+        return ", ".join(map(cell, value))
+    return str(value)
+
+
+def value_range(low: Any, high: Any) -> str:
+    return "" if low is None and high is None else f"{cell(low)} .. {cell(high)}"
+
+
+def revision(major: Any, minor: Any) -> str:
+    return "" if major is None and minor is None else f"{cell(major) or '?'}.{cell(minor) or '?'}"
+
+
+def type_text(parameter: dict) -> str:
+    """``UINT`` (or ``? (written)`` for a code no type has), with the size when the entry gives one."""
+    data_type = parameter["data_type"]
+    text = data_type["name"] or f"? ({cell(data_type['written'])})"
+    return f"{text}, {parameter['size']} B" if parameter["size"] is not None else text
+
+
+def bits_text(offset: int | None, bits: int | None) -> str:
+    if offset is None or bits is None:
+        return "?"
+    return f"bit {offset}" if bits <= 1 else f"bits {offset}-{offset + bits - 1}"
+
+
+def member_label(member: dict) -> str:
+    """What a block of a bit map is labelled with: the name, else the keyword or value."""
+    kind = member["kind"]
+    if kind == "pad":
+        return "pad"
+    if kind == "constant":
+        return f"0x{member['value']:X}"
+    if kind == "path":
+        return member["path"]["text"]
+    return member.get("name") or member.get("keyword") or kind
+
+
+def reference_text(ref: dict | None) -> str:
+    """One line for a resolved reference (an RPI, a size, a format, a group or assembly member)."""
+    if ref is None:
+        return ""
+    kind, keyword = ref.get("kind"), ref.get("keyword", "")
+    bit = f" bit {ref['bit']}" if ref.get("bit") is not None else ""
+    name = f" '{ref['name']}'" if ref.get("name") else ""
+    if kind == "parameter":
+        units = f" {ref['units']}" if ref.get("units") else ""
+        return f"{keyword}{bit}{name}: default {cell(ref['default'])}{units}, range " \
+               f"{value_range(ref['minimum'], ref['maximum'])}"
+    if kind == "assembly":
+        size = f", {ref['size']} bytes" if ref.get("size") is not None else ""
+        return f"{keyword}{name}{size}"
+    if kind == "undefined":
+        return f"{keyword} (undefined)"
+    if kind == "value":
+        return cell(ref.get("written"))
+    return f"{keyword}{bit}"
+
+
+def member_text(member: dict) -> str:
+    """A member of an assembly, as the member list says it."""
+    kind = member["kind"]
+    if kind == "pad":
+        return "padding"
+    if kind == "constant":
+        return f"constant {member['value']} (0x{member['value']:X})"
+    if kind == "path":
+        return f"path {member['path']['text']} ({member['path']['summary']})"
+    if kind == "keyword":
+        return member["keyword"]
+    if kind == "parameter":
+        bit = f" bit {member['bit']}" if member.get("bit") is not None else ""
+        return f"{member['keyword']}{bit} {member.get('name') or ''} ({member['data_type'] or '?'})".replace("  ", " ")
+    return reference_text(member)
+
+
+def member_title(member: dict, parameter: dict | None) -> str:
+    """The hover text of a block: what it is, where, and for a parameter its type, range and help."""
+    where = bits_text(member["offset"], member["bits"])
+    what = member["member"]
+    if parameter is None:
+        return f"{member_text(what)}, {where}"
+    bit = f" bit {what['bit']}" if what.get("bit") is not None else ""
+    lines = [f"{what['keyword']}{bit} {cell(parameter['name'])}, {where}",
+             f"{type_text(parameter)}; range {value_range(parameter['minimum'], parameter['maximum'])}"
+             f"; default {cell(parameter['default'])} {cell(parameter['units'])}".rstrip()]
+    if parameter["help"]:
+        lines.append(parameter["help"])
+    return "\n".join(lines)
+
+
+def endpoint_text(value: dict | None, unit: str = "") -> str:
+    """An RPI or size of a connection: the value, or the parameter it names with its default and range."""
+    if value is None:
+        return ""
+    if "reference" in value:
+        return reference_text(value["reference"])
+    return f"{cell(value['value'])}{unit}"
+
+
+def path_text(path: dict | None) -> str:
+    if not path:
+        return ""
+    summary = path.get("summary")
+    return f"{path['text']} = {summary}" if summary and summary != path["text"] else path["text"]

@@ -163,7 +163,9 @@ def test_cli_writes_the_page_to_a_file_or_standard_output(tmp_path: Path) -> Non
     text = tmp_path / "page.txt"  # -o takes the other formats too: the text as piped
     assert CliRunner().invoke(cli, ["show", str(EXAMPLE), "-o", str(text)]).exit_code == 0
     assert text.read_text(encoding="utf-8") == CliRunner().invoke(cli, ["show", str(EXAMPLE)]).stdout
-    result = CliRunner().invoke(cli, ["diff", str(EXAMPLE), str(EXAMPLE), "--format", "html", "-o", str(target)])
+    diff = ["diff", str(EXAMPLE), str(EXAMPLE), "--format", "html", "-o", str(target)]
+    assert CliRunner().invoke(cli, diff).exit_code == 2  # the page of show is there: replaced only with --force
+    result = CliRunner().invoke(cli, [*diff, "--force"])
     assert result.exit_code == 0 and "the same device" in target.read_text(encoding="utf-8")
 
 

@@ -42,9 +42,35 @@ async function restart() {
   await start();
 }
 
+// The server's commands (docs/editors.md) take the document's URI. The language client registers
+// them under their own names for other extensions; these are their palette entries, run on the
+// active EDS editor.
+async function runOnActiveDocument(command) {
+  const editor = vscode.window.activeTextEditor;
+  if (!client || !editor || editor.document.languageId !== "eds") {
+    vscode.window.showErrorMessage("edsconv: open an EDS file first");
+    return undefined;
+  }
+  return client.sendRequest("workspace/executeCommand", { command, arguments: [editor.document.uri.toString()] });
+}
+
+async function showDevice() {
+  const shown = await runOnActiveDocument("edsconv.showDevice");
+  if (!shown) return;
+  const document = await vscode.workspace.openTextDocument({ content: shown.text, language: "plaintext" });
+  await vscode.window.showTextDocument(document, { viewColumn: vscode.ViewColumn.Beside, preview: true });
+}
+
+const PALETTE_COMMANDS = {
+  "edsconv.showDeviceBeside": showDevice,
+  "edsconv.convertActiveToXml": () => runOnActiveDocument("edsconv.convertToXml"),
+  "edsconv.fixAllInActive": () => runOnActiveDocument("edsconv.fixAll"),
+};
+
 async function activate(context) {
   context.subscriptions.push(
     vscode.commands.registerCommand("edsconv.restartServer", restart),
+    ...Object.entries(PALETTE_COMMANDS).map(([name, run]) => vscode.commands.registerCommand(name, run)),
     vscode.workspace.onDidChangeConfiguration((event) => {
       if (event.affectsConfiguration(SETTING)) return restart();
       return undefined;
@@ -57,4 +83,4 @@ function deactivate() {
   return client ? client.stop() : undefined;
 }
 
-module.exports = { activate, deactivate, DOCUMENT_SELECTOR };
+module.exports = { activate, deactivate, DOCUMENT_SELECTOR, PALETTE_COMMANDS };

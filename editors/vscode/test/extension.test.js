@@ -36,9 +36,15 @@ function fakeVscode(settings, shown = []) {
           return settings.command;
         } }),
         onDidChangeConfiguration: (listener) => { listeners.push(listener); return { dispose() {} }; },
+        openTextDocument: async (options) => options,
       },
       commands: { registerCommand: (name, run) => { commands[name] = run; return { dispose() {} }; } },
-      window: { showErrorMessage: (message) => shown.push(message) },
+      window: {
+        showErrorMessage: (message) => shown.push(message),
+        activeTextEditor: settings.editor,
+        showTextDocument: async (document, options) => shown.push({ document, options }),
+      },
+      ViewColumn: { Beside: -2 },
     },
   };
 }
@@ -97,4 +103,32 @@ test("a server that cannot start is reported, not thrown", async () => {
   await extension.activate({ subscriptions: [] });
   assert.strictEqual(shown.length, 1);
   assert.match(shown[0], /pip install 'edsconv\[lsp\]'.*ENOENT/);
+});
+
+test("the palette commands run the server's commands on the active EDS document", async () => {
+  const shown = [];
+  const requests = [];
+  const editor = { document: { languageId: "eds", uri: { toString: () => "file:///x/device.eds" } } };
+  const fake = fakeVscode({ command: ["edsconv", "lsp"], editor }, shown);
+  class LanguageClient {
+    async start() {}
+    async sendRequest(method, params) {
+      requests.push([method, params]);
+      return params.command === "edsconv.showDevice" ? { text: "Device\n", document: {} } : 2;
+    }
+    dispose() {}
+  }
+  const extension = loadExtension({ vscode: fake.vscode, "vscode-languageclient/node": { LanguageClient } });
+  await extension.activate({ subscriptions: [] });
+  await fake.commands["edsconv.showDeviceBeside"]();
+  assert.deepStrictEqual(requests[0], ["workspace/executeCommand",
+    { command: "edsconv.showDevice", arguments: ["file:///x/device.eds"] }]);
+  assert.deepStrictEqual(shown[0], { document: { content: "Device\n", language: "plaintext" },
+    options: { viewColumn: -2, preview: true } });
+  assert.strictEqual(await fake.commands["edsconv.fixAllInActive"](), 2);
+  await fake.commands["edsconv.convertActiveToXml"]();
+  assert.deepStrictEqual(requests.map(([, params]) => params.command),
+    ["edsconv.showDevice", "edsconv.fixAll", "edsconv.convertToXml"]);
+  // the server's own command names stay the language client's: no second registration
+  assert.ok(!("edsconv.showDevice" in fake.commands));
 });

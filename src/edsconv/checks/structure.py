@@ -157,12 +157,17 @@ def section_placement(ctx: Context) -> Iterator[Diagnostic]:
 @check(VENDOR_SECTION_NOT_LAST)
 def vendor_sections_last(ctx: Context) -> Iterator[Diagnostic]:
     """Vendor-specific sections come after every section the spec defines (C.4.1.2.2.7)."""
-    sections = ctx.eds.sections
-    for index, section in enumerate(sections):
-        if tables.section_spec(section.name) is not tables.VENDOR_SECTION:
-            continue
-        later = next((s for s in sections[index + 1:] if s.name in tables.SECTIONS), None)
-        if later is not None:
+    yield from reversed(list(_vendor_sections_misplaced(ctx)))
+
+
+def _vendor_sections_misplaced(ctx: Context) -> Iterator[Diagnostic]:
+    """One backward pass, last section first, remembering the nearest spec section seen: linear, where
+    rescanning the sections after each vendor section was quadratic (200,000 of them took minutes)."""
+    later = None
+    for section in reversed(ctx.eds.sections):
+        if section.name in tables.SECTIONS:
+            later = section
+        elif later is not None and tables.section_spec(section.name) is tables.VENDOR_SECTION:
             yield ctx.at(VENDOR_SECTION_NOT_LAST, f"vendor-specific section [{section.name}] stands before "
                                                   f"[{later.name}] (line {later.line}); vendor sections come last",
                          section)

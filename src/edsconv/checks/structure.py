@@ -49,6 +49,7 @@ from edsconv.checks.structure_rules import (
 )
 from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.eds.syntax import Entry, Field, Group, Scalar, Section, String
+from edsconv.limits import decimal
 from edsconv.model.build import iter_references
 from edsconv.model.values import CONTROL_CHARACTER, NULL_TERMINATOR, string_flaw
 
@@ -72,7 +73,7 @@ def _keyword_problem(keyword: str) -> tuple[Rule, str] | None:
     """The rule a keyword (section, entry or field keyword) breaks, with the reason."""
     if _ZERO_PADDED_VENDOR_KEYWORD.fullmatch(keyword):
         vendor_id = keyword.partition("_")[0]
-        return VENDOR_ID_LEADING_ZERO, f"vendor ID {vendor_id} has leading zeros; write {int(vendor_id)}_..."
+        return VENDOR_ID_LEADING_ZERO, f"vendor ID {vendor_id} has leading zeros; write {vendor_id.lstrip('0')}_..."
     vendor_keyword = tables.VENDOR_SECTION_KEYWORD_RE if " " in keyword else tables.VENDOR_KEYWORD_RE
     if keyword[:1].isdigit() and not vendor_keyword.fullmatch(keyword):
         return KEYWORD_STARTS_WITH_DIGIT, "a public keyword never starts with a digit and a vendor-specific " \
@@ -433,7 +434,7 @@ def _is_choice(word: str, field_spec: tables.FieldSpec) -> bool:
     if word in field_spec.choices or (field_spec.vendor_keywords and tables.is_vendor_keyword(word)):
         return True
     try:
-        return int(word, 0) in field_spec.choices
+        return (decimal(word) if word.isascii() and word.isdigit() else int(word, 0)) in field_spec.choices
     except ValueError:
         return False
 

@@ -30,6 +30,7 @@ from edsconv.diagnostics import Rule, Severity, block, rule
 from edsconv.eds.lexicon import undefined_escapes
 from edsconv.eds.reader_rules import BAD_ESCAPE, UNICODE_ESCAPE_IN_ASCII
 from edsconv.eds.syntax import Group, Scalar, String, Value, ValueKind
+from edsconv.limits import cut, decimal
 
 WRONG_KIND = rule(
     "EDS101", Severity.ERROR, "C.4.1.3", "A field holds a value of the wrong kind for its data type",
@@ -311,9 +312,9 @@ def _integer(raw: str, type_name: str) -> int:
     if kind is not ValueKind.INTEGER:
         raise ValueProblem(WRONG_KIND, f"expected an integer ({type_name}), found {raw!r}")
     sign, digits = _sign_and_digits(raw)
-    number = sign * int(digits)
+    number = sign * decimal(digits)
     if not data_type.in_range(number):
-        raise ValueProblem(OUT_OF_RANGE, f"{raw} is outside the {type_name} range {data_type.minimum} to "
+        raise ValueProblem(OUT_OF_RANGE, f"{cut(raw)} is outside the {type_name} range {data_type.minimum} to "
                            f"{data_type.maximum}", clause=clause)
     if len(digits) > 1 and digits.startswith("0"):
         raise ValueNote(LEADING_ZERO, f"{raw} has leading zeros, which decimal notation does not allow "
@@ -439,7 +440,7 @@ def to_revision(value: Value) -> Revision:
     match = _REVISION.fullmatch(raw)
     if not match:
         raise ValueProblem(BAD_REVISION, f"{raw!r} is not a revision Major.Minor")
-    revision = Revision(int(match["major"]), int(match["minor"]))
+    revision = Revision(decimal(match["major"]), decimal(match["minor"]))
     if revision == Revision(0, 0):
         raise ValueProblem(BAD_REVISION, "revision 0.0 is invalid")
     # one digit each: within the limits and without leading zeros

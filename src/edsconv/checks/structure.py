@@ -73,7 +73,8 @@ def _keyword_problem(keyword: str) -> tuple[Rule, str] | None:
     """The rule a keyword (section, entry or field keyword) breaks, with the reason."""
     if _ZERO_PADDED_VENDOR_KEYWORD.fullmatch(keyword):
         vendor_id = keyword.partition("_")[0]
-        return VENDOR_ID_LEADING_ZERO, f"vendor ID {vendor_id} has leading zeros; write {vendor_id.lstrip('0')}_..."
+        written = vendor_id.lstrip("0") or "0"  # as written, not int(): a vendor ID may have 5000 digits
+        return VENDOR_ID_LEADING_ZERO, f"vendor ID {vendor_id} has leading zeros; write {written}_..."
     vendor_keyword = tables.VENDOR_SECTION_KEYWORD_RE if " " in keyword else tables.VENDOR_KEYWORD_RE
     if keyword[:1].isdigit() and not vendor_keyword.fullmatch(keyword):
         return KEYWORD_STARTS_WITH_DIGIT, "a public keyword never starts with a digit and a vendor-specific " \

@@ -73,3 +73,74 @@ def test_messages_show_the_users_spelling_and_cut_long_values() -> None:
     assert shown("\\q") == "'\\q'"
     assert shown("a\x00b") == "'a\\x00b'"
     assert cut("x" * 5000) == "x" * 57 + "... (5000 characters)"
+
+
+# --- files that are not EDS text: one diagnostic (items 22, 29, 37) -------------------------------------
+
+def _refused_once(path: Path, code: str, *words: str) -> None:
+    for command in (["lint"], ["eds2xml", "-o", str(path.parent / "out")], ["fmt", "--check"], ["parse"]):
+        result = CliRunner().invoke(cli, [command[0], str(path), *command[1:]])
+        lines = [line for line in (result.stdout + result.stderr).splitlines() if f" {code} " in line]
+        assert result.exit_code == 1 and lines, (command, result.output)
+        assert all(word in lines[0] for word in words), lines[0]
+        assert "EDS001" not in result.output + result.stderr and len(result.stdout.splitlines()) <= 3
+    assert not (path.parent / "out").exists()
+
+
+def test_a_binary_file_is_one_eds026(tmp_path: Path) -> None:
+    path = tmp_path / "ls.eds"
+    path.write_bytes(Path("/bin/ls").read_bytes() if Path("/bin/ls").exists() else bytes(range(256)) * 64)
+    _refused_once(path, "EDS026", "binary")
+
+
+@pytest.mark.parametrize(("codec", "name"), [("utf-16-le", "UTF-16-LE"), ("utf-16-be", "UTF-16-BE")])
+def test_utf16_without_a_bom_is_one_eds026(tmp_path: Path, codec: str, name: str) -> None:
+    path = tmp_path / "wide.eds"
+    path.write_bytes(EXAMPLE.read_text().encode(codec))
+    _refused_once(path, "EDS026", f"looks like {name} text without a byte order mark")
+
+
+def test_utf16_with_a_bom_and_a_stray_nul_in_a_string_are_still_read() -> None:
+    wide = edsconv.parse(EXAMPLE.read_text().encode("utf-16"))
+    assert "EDS026" not in [d.code for d in wide.diagnostics] and wide.sections
+    stray = edsconv.parse(EXAMPLE.read_text().replace('VendName = "', 'VendName = "\x00', 1))
+    _, diagnostics = edsconv.analyse(stray)
+    assert "EDS116" in [d.code for d in diagnostics] and "EDS026" not in [d.code for d in diagnostics]
+
+
+def test_an_xml_profile_given_as_an_eds_is_eds027_with_the_right_commands(tmp_path: Path) -> None:
+    path = tmp_path / "device.eds"
+    path.write_bytes((REPO / "corpus" / "xml" / "cip-device" / "valid-complete.xml").read_bytes())
+    _refused_once(path, "EDS027", "`edsconv validate`", "`edsconv xml2eds`")
+
+
+def test_an_eds_given_to_validate_or_xml2eds_gets_a_hint() -> None:
+    for command in ("validate", "xml2eds"):
+        result = CliRunner().invoke(cli, [command, str(EXAMPLE)])
+        assert result.exit_code == 1
+        assert "XML001" in result.output + result.stderr
+        assert "this looks like an EDS file: `edsconv lint` checks it" in result.output + result.stderr
+
+
+def test_deep_xml_is_refused_in_plain_words(tmp_path: Path) -> None:
+    path = tmp_path / "deep.xml"
+    path.write_text("<a>" * 1000 + "</a>" * 1000)
+    result = CliRunner().invoke(cli, ["validate", str(path)])
+    assert "elements nested deeper than 256 levels refused" in result.output
+    assert "XML_PARSE_HUGE" not in result.output
+
+
+def test_a_file_past_the_size_limit_is_eds025_without_reading_it(tmp_path: Path,
+                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    import edsconv.eds.refusals as refusals
+
+    monkeypatch.setattr(refusals, "MAX_EDS_BYTES", 4096)
+    assert len(refusals.read_bytes("/dev/zero")) == 4097  # /dev/zero is never read to the end
+    path = tmp_path / "big.eds"
+    path.write_text(EXAMPLE.read_text() + "$ padding\n" * 1000)
+    _refused_once(path, "EDS025", "EDS input limit")
+    result = CliRunner().invoke(cli, ["lint", "/dev/zero"])
+    assert result.exit_code == 1 and " EDS025 " in result.output and "MemoryError" not in result.output
+    assert [d.code for d in analyse(path.read_text()).diagnostics] == ["EDS025"]
+    monkeypatch.undo()
+    assert [d.code for d in analyse(path.read_text()).diagnostics] == []

@@ -25,6 +25,7 @@ from pathlib import Path
 from edsconv.config import FileRules, Overrides, Resolver
 from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, rule
 from edsconv.eds.reader import parse
+from edsconv.eds.refusals import read_bytes
 from edsconv.eds.syntax import EdsFile
 from edsconv.fix import fix_source, raw_text
 from edsconv.report import FileReport
@@ -102,7 +103,7 @@ def check(eds: EdsFile, rules: FileRules = EVERY_RULE) -> list[Diagnostic]:
 def lint_file(path: str, rules: FileRules = EVERY_RULE, fix: FixMode = FixMode.REPORT) -> FileReport:
     """Read and check one file (and fix it, as ``fix`` says); never raises for a problem of this file."""
     try:
-        data = Path(path).read_bytes()
+        data = read_bytes(path)  # never more than one byte past the size limit (EDS025)
         if fix is FixMode.REPORT:
             return FileReport(path, check(parse(data, path), rules))
         return _fixed(path, data, rules, fix)

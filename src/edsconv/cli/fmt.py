@@ -10,7 +10,8 @@ import click
 from edsconv.atomic import write_atomically
 from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, EXIT_USAGE, CannotRun, documentation, reading, writing
 from edsconv.eds.canonical import format_bytes
-from edsconv.eds.reader import load
+from edsconv.eds.reader import parse
+from edsconv.eds.refusals import read_bytes
 from edsconv.eds.syntax import EdsFile
 
 #: what became of one file
@@ -48,8 +49,8 @@ def fmt_command(files: tuple[Path, ...], check: bool, show_diff: bool) -> int:
 def format_file(path: Path, write: bool, show_diff: bool) -> tuple[str, int]:
     """Format one file (or, unless ``write``, say that it would change); what became of it and its exit code."""
     with reading(path):
-        original = path.read_bytes()
-        eds = load(path)
+        original = read_bytes(path)  # never more than one byte past the size limit (EDS025)
+        eds = parse(original, str(path))
     errors = [d for d in eds.diagnostics if d.severity.name == "ERROR"]
     if errors:
         click.echo(f"{path}: not formatted: {len(errors)} syntax error(s) leave text that cannot be laid "

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import click
 
+from edsconv.cli.common import documentation
 
-@click.command("lsp")
+
+@click.command("lsp", epilog=documentation("editors.md"))
 @click.option("--stdio", is_flag=True, help="Speak LSP on stdin/stdout (the default and only transport; "
               "accepted because editors pass it).")
 def lsp_command(stdio: bool) -> int:

@@ -7,8 +7,9 @@ from pathlib import Path
 
 import click
 
-from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, documentation, read_eds
+from edsconv.cli.common import EXIT_CLEAN, EXIT_FINDINGS, CannotRun, documentation, read_eds
 from edsconv.diff import diff, format_text
+from edsconv.eds.syntax import EdsFile
 from edsconv.model.build import build
 
 
@@ -21,9 +22,10 @@ def diff_command(old_file: Path, new_file: Path, output_format: str) -> int:
     """Compare two EDS files by meaning.
 
     Exit 0 when they describe the same device, 1 when they differ, 2 when a file
-    cannot be read.
+    cannot be read or holds no section (an empty file, binary, XML). A file with
+    syntax errors is compared with a warning: the text they hide is not.
     """
-    changes = diff(build(read_eds(old_file)), build(read_eds(new_file)))
+    changes = diff(build(_comparable(old_file)), build(_comparable(new_file)))
     if output_format == "json":
         click.echo(json.dumps({"old": str(old_file), "new": str(new_file), "equal": not changes,
                                "changes": [c.as_dict() for c in changes]}, indent=2))
@@ -33,3 +35,17 @@ def diff_command(old_file: Path, new_file: Path, output_format: str) -> int:
     else:
         click.echo(f"{old_file} and {new_file} describe the same device")
     return EXIT_FINDINGS if changes else EXIT_CLEAN
+
+
+def _comparable(path: Path) -> EdsFile:
+    """The syntax model of ``path``; :class:`CannotRun` when it has no section to compare (two such
+    files would "describe the same device"), a warning when syntax errors hide some of its text."""
+    eds = read_eds(path)
+    errors = [d for d in eds.diagnostics if d.severity.name == "ERROR"]
+    if not eds.sections:
+        reason = errors[0].format() if errors else "it holds no [Section]"
+        raise CannotRun(f"{path}: cannot compare: no section could be read; {reason}")
+    if errors:
+        click.echo(f"{path}: warning: {len(errors)} syntax error(s); the text they hide is not compared "
+                   f"(first: {errors[0].format()}; 'edsconv lint {path}' lists them)", err=True)
+    return eds

@@ -144,3 +144,13 @@ def test_a_file_past_the_size_limit_is_eds025_without_reading_it(tmp_path: Path,
     assert [d.code for d in analyse(path.read_text()).diagnostics] == ["EDS025"]
     monkeypatch.undo()
     assert [d.code for d in analyse(path.read_text()).diagnostics] == []
+
+
+def test_an_undefined_escape_is_shown_as_written_not_as_a_python_repr() -> None:
+    """Issue 18 item 31: the user wrote \\q and read '\\\\q'."""
+    eds = edsconv.parse('[File]\nDescText = "a\\qb";\n')
+    (message,) = [d.message for d in eds.diagnostics if d.code == "EDS003"]
+    assert message.startswith("escape sequence '\\q' is not defined")
+    long_date = edsconv.analyse(edsconv.parse(_example_with("CreateDate = ", "CreateDate = " + "x" * 5000 + "; $ ")))
+    (date,) = [d.message for d in long_date[1] if "CreateDate" in d.message]
+    assert "(5000 characters)" in date and len(date) < 200

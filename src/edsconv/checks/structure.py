@@ -49,7 +49,7 @@ from edsconv.checks.structure_rules import (
 )
 from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.eds.syntax import Entry, Field, Group, Scalar, Section, String
-from edsconv.limits import decimal
+from edsconv.limits import decimal, shown
 from edsconv.model.build import iter_references
 from edsconv.model.values import CONTROL_CHARACTER, NULL_TERMINATOR, string_flaw
 
@@ -450,7 +450,7 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
         return ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} field {index + 1}: the {field_spec.name} {word} "
                                        f"{_UNDEFINED}{_did_you_mean(meant)}", item, clause=field_spec.clause)
     vendor = " or a VendorID_keyword" if field_spec.vendor_keywords else ""
-    return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {word!r}; allowed: "
+    return ctx.at(NOT_A_CHOICE, f"{entry.keyword} field {index + 1} ({field_spec.name}) is {shown(word)}; allowed: "
                                 f"{allowed}{vendor}", item)
 
 
@@ -532,7 +532,7 @@ def icon(ctx: Context) -> Iterator[Diagnostic]:
                      icon_entry)
     name = ctx.device.identity.icon
     if isinstance(name, str) and not name.strip().lower().endswith(".ico"):
-        yield ctx.at(ICON_NOT_ICO, f"Icon {name!r} does not end in .ico; the icon file shall have the MS Windows "
+        yield ctx.at(ICON_NOT_ICO, f"Icon {shown(name)} does not end in .ico; the icon file shall have the MS Windows "
                                    "ICO format", icon_entry.fields[0] if icon_entry.fields else icon_entry)
 
 

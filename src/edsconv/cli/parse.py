@@ -17,15 +17,13 @@ from edsconv.eds.syntax import EdsFile, to_json
 class _Parsed:
     """One file's syntax model as a report (edsconv.report.Report): the JSON shape of lint and validate."""
 
+    path: str
+    diagnostics: list[Diagnostic]
     eds: EdsFile
 
-    @property
-    def path(self) -> str:
-        return self.eds.path or ""
-
-    @property
-    def diagnostics(self) -> list[Diagnostic]:
-        return self.eds.diagnostics
+    @classmethod
+    def of(cls, eds: EdsFile) -> _Parsed:
+        return cls(eds.path or "", eds.diagnostics, eds)
 
     def as_dict(self) -> dict:
         return to_json(self.eds)
@@ -40,7 +38,7 @@ def parse_command(files: tuple[Path, ...], output_format: str) -> int:
     """Read EDS files and report their syntax diagnostics (or print the model as JSON)."""
     from edsconv.report import format_json
 
-    reports = [_Parsed(read_eds(path)) for path in files]
+    reports = [_Parsed.of(read_eds(path)) for path in files]
     diagnostics = [d for report in reports for d in report.diagnostics]
     if output_format == "json":
         sys.stdout.write(format_json(reports))

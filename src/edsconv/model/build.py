@@ -18,7 +18,7 @@ from typing import Any
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Severity, rule
 from edsconv.eds.syntax import EdsFile, Entry, Field, Group, Scalar, String, Value, ValueKind
-from edsconv.limits import MAX_DIGITS, TOO_MANY_DIGITS, cut
+from edsconv.limits import MAX_DIGITS, TOO_MANY_DIGITS, cut, shown
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -219,7 +219,7 @@ class _Builder:
         if plan.path and isinstance(value, String):
             return to_path(value, allow_references=True)
         if plan.data_type is None:
-            raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {plain(value)!r}")
+            raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {shown(plain(value))}")
         if plan.kept:
             return plain(value)
         if plan.converter is not None:

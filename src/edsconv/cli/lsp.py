@@ -17,7 +17,9 @@ def lsp_command(stdio: bool) -> int:
     try:
         from edsconv.lsp.server import create_server
     except ImportError as error:
-        click.echo(f"edsconv lsp needs the lsp extra: pip install 'edsconv[lsp]' ({error})", err=True)
+        click.echo(f"edsconv lsp needs the lsp extra (pygls, lsprotocol; {error}). edsconv is not on PyPI: "
+                   f"install it from its clone, python3 -m pip install '/path/to/edsconv[lsp]', or as "
+                   f"\"edsconv[lsp] @ git+URL\" (docs/editors.md)", err=True)
         return EXIT_USAGE
     create_server().start_io()
     return EXIT_CLEAN

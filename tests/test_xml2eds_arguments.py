@@ -65,3 +65,26 @@ def test_a_third_profile_is_a_usage_error(profiles: tuple[Path, Path]) -> None:
 def test_the_network_reader_alone_still_reads_a_network_profile(profiles: tuple[Path, Path]) -> None:
     device, diagnostics = device_from_profiles([profiles[1]], network_alone=True)
     assert device is not None and "XML009" not in [d.code for d in diagnostics]
+
+
+def _real_files() -> list[Path]:
+    from conftest import SHARED_REAL
+
+    found = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
+    return found[:60:12]  # five real files of different vendors
+
+
+@pytest.mark.parametrize("eds", [*sorted((REPO / "corpus" / "examples").glob("*.eds")), *_real_files()],
+                         ids=lambda path: path.name)
+def test_xml2eds_writes_what_fmt_check_accepts(tmp_path: Path, eds: Path) -> None:
+    """Issue 18 item 15: the README promises "an EDS in canonical form"; fmt --check rejected it."""
+    converted = CliRunner().invoke(cli, ["eds2xml", str(eds), "-o", str(tmp_path)])
+    if converted.exit_code != 0:
+        pytest.skip("eds2xml does not convert this file (XML103) or finds errors")
+    stem = eds.stem
+    target = tmp_path / "back.eds"
+    back = CliRunner().invoke(cli, ["xml2eds", str(tmp_path / f"{stem}_device.xml"),
+                                    str(tmp_path / f"{stem}_commnet.xml"), "-o", str(target)])
+    assert back.exit_code == 0, back.output
+    checked = CliRunner().invoke(cli, ["fmt", "--check", str(target)])
+    assert checked.exit_code == 0, checked.output

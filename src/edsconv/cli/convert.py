@@ -135,7 +135,9 @@ def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool
       2  could not run: a missing file, more than two profiles, a file that
          cannot be written, an existing output without --force
     """
+    from edsconv.eds.canonical import write_canonical
     from edsconv.eds.from_model import device_to_eds
+    from edsconv.eds.reader import parse
     from edsconv.eds.writer import write
 
     if len(profiles) > 2:
@@ -149,7 +151,8 @@ def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool
     echo_diagnostics(diagnostics, err=True)
     if device is None:
         return EXIT_FINDINGS
-    text = write(device_to_eds(device), newline="\r\n" if output else "\n")
+    # canonical as fmt lays it out (fmt --check accepts it): the model's EDS, read back and formatted
+    text = write_canonical(parse(write(device_to_eds(device))), newline="\r\n" if output else "\n")
     if output is None:
         sys.stdout.write(text)
     else:

@@ -112,6 +112,7 @@ def test_an_xml_profile_given_as_an_eds_is_eds027_with_the_right_commands(tmp_pa
     path = tmp_path / "device.eds"
     path.write_bytes((REPO / "corpus" / "xml" / "cip-device" / "valid-complete.xml").read_bytes())
     _refused_once(path, "EDS027", "`edsconv validate`", "`edsconv xml2eds`")
+    assert "EDS027" not in [d.code for d in edsconv.parse(EXAMPLE.read_bytes()).diagnostics]
 
 
 def test_an_eds_given_to_validate_or_xml2eds_gets_a_hint() -> None:

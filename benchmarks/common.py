@@ -38,9 +38,10 @@ def shapes(corpus: Path, quick: bool) -> list[Shape]:
     """The inputs of a run: the real corpus when present, and generated files of both shapes."""
     found = corpus_files(corpus)
     real = [Shape(f"real corpus ({len(found)} files)", "real", found)] if found else []
-    names = (["params-0.5mb.eds", "dense-params-10k.eds", "dense-mixed-0.4mb.eds"] if quick
-             else ["params-2mb.eds", "dense-params-40k.eds", "dense-mixed-1.7mb.eds"])
-    kinds = ["ez", "dense", "dense"]
+    names = (["params-0.5mb.eds", "dense-params-10k.eds", "dense-mixed-0.4mb.eds", "vendor-sections-20k.eds"]
+             if quick else ["params-2mb.eds", "dense-params-40k.eds", "dense-mixed-1.7mb.eds",
+                            "vendor-sections-200k.eds"])
+    kinds = ["ez", "dense", "dense", "dense"]
     return real + [Shape(name.removesuffix(".eds"), kind, [generate(name)])
                    for name, kind in zip(names, kinds, strict=True)]
 

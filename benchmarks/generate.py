@@ -8,7 +8,9 @@ line and no comment, as generators and hand editors write them: ``dense-params``
 holds only ``ParamN = 0,,,0x0000,0xC8,4,"P1","","",0,100,1,,,,,,,,,;`` lines (the
 file of issue 13), ``dense-mixed`` parameters, assemblies that use them and
 connections that use both, so that the semantic model, the checks and ``show``
-have cross-references to resolve. Every file goes to DIR (default:
+have cross-references to resolve. Vendor shape (``vendor-sections-*.eds``): the
+header, then only empty vendor-specific sections ``[65535_S1]`` ``[65535_S2]`` ...,
+the file of issue 18 item 9 (the placement check was quadratic in them). Every file goes to DIR (default:
 <tempdir>/edsconv-bench); the output is deterministic and never committed.
 """
 
@@ -101,6 +103,10 @@ def dense_mixed(scale: int = 1) -> Iterator[str]:
     yield from (dense_connection(n, 10000 // scale) for n in range(1, 6000 // scale + 1))
 
 
+def vendor_section(n: int) -> str:
+    return f"[65535_S{n}]\n"
+
+
 def repeated(entry, first: str = "[Params]\n") -> Iterator[str]:
     """``first``, then ``entry(1)``, ``entry(2)`` ... for ever: the caller stops at its size."""
     yield first
@@ -108,7 +114,7 @@ def repeated(entry, first: str = "[Params]\n") -> Iterator[str]:
 
 
 #: name -> (the text after the header, in pieces; how much of it: bytes for the EZ-EDS shape, entries for the
-#: dense parameters, None for all)
+#: dense parameters and the vendor sections, None for all)
 SHAPES: dict[str, tuple] = {
     "params-2mb.eds": (lambda: repeated(param), 2 * MIB),
     "params-0.5mb.eds": (lambda: repeated(param), MIB // 2),
@@ -118,7 +124,11 @@ SHAPES: dict[str, tuple] = {
     "dense-mixed-1.7mb.eds": (lambda: dense_mixed(2), None),
     "dense-mixed-0.4mb.eds": (lambda: dense_mixed(8), None),
     "dense-mixed-3mb.eds": (lambda: dense_mixed(1), None),
+    "vendor-sections-200k.eds": (lambda: repeated(vendor_section, first=""), 200000),
+    "vendor-sections-20k.eds": (lambda: repeated(vendor_section, first=""), 20000),
 }
+#: the shapes whose size counts entries (or sections), not bytes
+COUNTED = ("dense", "vendor")
 
 
 def generate(name: str, directory: Path = DEFAULT_DIR) -> Path:
@@ -130,7 +140,7 @@ def generate(name: str, directory: Path = DEFAULT_DIR) -> Path:
     with temporary.open("w", encoding="ascii", newline="\n") as out:
         written = out.write(HEADER)
         for count, text in enumerate(body()):
-            if size is not None and (count > size if name.startswith("dense") else written >= size):
+            if size is not None and (count > size if name.startswith(COUNTED) else written >= size):
                 break
             written += out.write(text)
     temporary.replace(path)

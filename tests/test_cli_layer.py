@@ -39,13 +39,20 @@ def test_every_command_lives_in_the_cli_package(name: str):
     assert cli.get_command(None, name) is not None  # type: ignore[arg-type]
 
 
-@pytest.mark.parametrize("name", ["lint", "rules", "show", "eds2xml", "xml2eds", "validate", "fmt", "diff", "merge"])
+@pytest.mark.parametrize("name", sorted(LazyGroup.lazy))
 def test_help_names_documentation_that_exists(name: str):
     result = CliRunner().invoke(cli, [name, "--help"])
     assert result.exit_code == 0
     assert "docs/" not in result.stdout.replace(" ", "").split("Documentation:")[0]
     (page,) = re.findall(r"Documentation:\s+(\S+)", result.stdout)
     assert Path(page).is_file()
+
+
+def test_the_readme_command_table_names_every_command():
+    """Issue 18 item 19: `lsp` was missing from the table."""
+    readme = (REPO / "README.md").read_text(encoding="utf-8")
+    listed = set(re.findall(r"^\| `edsconv ([a-z0-9]+)\b", readme, re.MULTILINE))
+    assert sorted(set(LazyGroup.lazy) - listed) == []
 
 
 def test_a_file_that_cannot_be_written_is_reported_not_a_traceback(tmp_path: Path):

@@ -37,6 +37,7 @@ def run(*args) -> subprocess.CompletedProcess:
 def test_clean_file_exit_0_and_no_output(files):
     result = run(files["clean"])
     assert (result.returncode, result.stdout) == (0, "")
+    assert result.stderr == "1 file: 0 errors, 0 warnings, 0 notes\n"  # the summary, as lint and validate
 
 
 def test_warnings_alone_exit_0(files):
@@ -75,7 +76,9 @@ def test_missing_file_names_the_file(files):
 def test_json_format(files):
     result = run("--format", "json", files["broken"])
     assert result.returncode == 1
-    model = json.loads(result.stdout)
+    document = json.loads(result.stdout)
+    assert document["summary"] == {"files": 1, "errors": 2, "warnings": 0}
+    (model,) = document["files"]
     section = model["sections"][0]
     assert section["name"] == "File"
     assert [e["keyword"] for e in section["entries"]] == ["B"]
@@ -85,10 +88,14 @@ def test_json_format(files):
         ("EDS001", 2, 7, "error"), ("EDS003", 3, 7, "error")]
 
 
-def test_json_format_several_files_is_a_list(files):
+def test_json_format_has_one_shape_whatever_the_number_of_files(files):
+    """Issue 18 item 24: one file gave an object, two a list; now always {"files": [...], "summary": ...}."""
     result = run("--format", "json", files["clean"], files["warning"])
     assert result.returncode == 0
-    models = json.loads(result.stdout)
+    document = json.loads(result.stdout)
+    one = json.loads(run("--format", "json", files["clean"]).stdout)
+    assert sorted(document) == ["files", "summary"] == sorted(one)
+    models = document["files"]
     assert [m["path"] for m in models] == [str(files["clean"]), str(files["warning"])]
     entry = models[0]["sections"][1]["entries"][0]
     group = entry["fields"][1]["value"]
@@ -104,7 +111,7 @@ def test_cli_runner_exit_codes(files, name, code):
     assert result.exit_code == code, result.output
     assert not isinstance(result.exception, Exception) or isinstance(result.exception, SystemExit)
     if name == "broken":
-        lines = result.output.splitlines()
+        lines = result.stdout.splitlines()
         assert len(lines) == 2 and all(LINE.match(line) for line in lines)
 
 

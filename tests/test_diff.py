@@ -164,3 +164,28 @@ def test_command_json(tmp_path: Path) -> None:
     assert data["equal"] is False
     assert data["changes"] == [{"kind": "changed", "category": "identity", "what": "identity.minor_revision",
                                 "old": "1", "new": "3"}]
+
+
+def test_inputs_without_a_section_are_not_the_same_device(tmp_path):
+    """Issue 18 item 23: "hello" and an empty file "described the same device", exit 0."""
+    from click.testing import CliRunner
+
+    from edsconv.cli import cli
+
+    (tmp_path / "a.eds").write_text("hello\n")
+    (tmp_path / "b.eds").write_text("")
+    result = CliRunner().invoke(cli, ["diff", str(tmp_path / "a.eds"), str(tmp_path / "b.eds")])
+    assert result.exit_code == 2 and "same device" not in result.output
+    assert result.stderr.startswith(f"{tmp_path / 'a.eds'}: cannot compare: no section could be read; ")
+    assert "EDS001" in result.stderr
+
+
+def test_syntax_errors_are_compared_with_a_warning(tmp_path):
+    from click.testing import CliRunner
+
+    from edsconv.cli import cli
+
+    (tmp_path / "c.eds").write_text("[File]\nA = 1 ];\nB = 2;\n")
+    result = CliRunner().invoke(cli, ["diff", str(tmp_path / "c.eds"), str(tmp_path / "c.eds")])
+    assert result.exit_code == 0
+    assert result.stderr.count("warning: 1 syntax error(s); the text they hide is not compared") == 2

@@ -162,14 +162,16 @@ def test_an_exception_on_one_file_gives_eds000_and_the_run_goes_on(tree: Path, m
 
 
 def test_an_unreadable_file_gives_eds000(tree: Path, monkeypatch):
-    real = Path.read_bytes
+    import edsconv.lint
 
-    def read_bytes(path: Path) -> bytes:
-        if path.name == "c.eds":
+    real = edsconv.lint.read_bytes
+
+    def read_bytes(path: str) -> bytes:
+        if Path(path).name == "c.eds":
             raise PermissionError(13, "Permission denied")
         return real(path)
 
-    monkeypatch.setattr(Path, "read_bytes", read_bytes)
+    monkeypatch.setattr(edsconv.lint, "read_bytes", read_bytes)
     result = run("lint", "--format", "json", str(tree))
     assert result.return_value == 1
     files = {Path(f["path"]).name: f for f in json.loads(result.stdout)["files"]}

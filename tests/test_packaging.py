@@ -133,3 +133,23 @@ def test_the_action_installs_edsconv_from_its_own_checkout_and_uploads_sarif():
     assert 'python -m pip install --disable-pip-version-check "$ACTION_PATH"' in action
     assert "github/codeql-action/upload-sarif@v3" in action
     assert "edsconv lint --format sarif" in action and "edsconv lint --format github" in action
+
+
+def test_the_docs_name_only_versions_and_tags_that_exist():
+    """Issue 18 item 16: docs/lint.md installed dist/edsconv-0.1.0-...whl (the wheel is 0.2.0) and pinned
+    `rev: v0.1.0` and `@v0.1.0`, tags the repository does not have. Advice for a package no index serves
+    (`pip install 'edsconv[lsp]'`) is gone too (item 17)."""
+    import re
+    import subprocess
+    import tomllib
+
+    version = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))["project"]["version"]
+    tags = subprocess.run(["git", "tag"], cwd=REPO, capture_output=True, text=True).stdout.split()
+    pages = [REPO / "README.md", *sorted((REPO / "docs").glob("*.md"))]
+    for page in pages:
+        text = page.read_text(encoding="utf-8")
+        for wheel in re.findall(r"edsconv-([0-9][\w.]*)-py3", text):
+            assert wheel == version, f"{page.name}: a {wheel} wheel; the version is {version}"
+        for tag in re.findall(r"(?:rev: |edsconv@)(v[0-9][\w.]*)", text):
+            assert tag in tags, f"{page.name} pins {tag}, which is no tag of the repository"
+        assert "pip install 'edsconv[lsp]'" not in text, page.name

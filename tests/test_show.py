@@ -378,3 +378,18 @@ def test_json_text_is_what_the_standard_library_writes(value):
 def test_show_json_of_every_file_is_the_standard_librarys(path: Path):
     described = document(path)
     assert json_text(described) == json.dumps(described, indent=2, ensure_ascii=False)
+
+
+def test_show_marks_a_default_without_reading_and_an_open_range(tmp_path: Path) -> None:
+    """Issue 18 item 32: a BOOL default of 255 was a blank, and ``1000 ..`` left its open end unexplained."""
+    text = EXAMPLE.read_text().replace("0xC8,                   $ Data Type: UDINT", "0xC1, $ BOOL", 1)
+    text = text.replace("4,                      $ Data Size in bytes", "1,", 1)
+    text = text.replace("2000,1000000,10000,     $ min", "0,,255, $ min", 1)
+    path = tmp_path / "bool.eds"
+    path.write_text(text)
+    doc = document(path)
+    (param1,) = [p for p in doc["parameters"] if p["keyword"] == "Param1"]
+    assert param1["default"] is None and param1["invalid"] == {"default": "255"}
+    row = next(line for line in plain_text(doc, ("parameters",)).splitlines() if line.startswith("Param1 "))
+    assert "0 .. (no max)" in row and "255 (invalid)" in row
+    assert "invalid" not in next(p for p in document()["parameters"] if p["keyword"] == "Param1")

@@ -82,3 +82,20 @@ def test_the_command_honours_suppressions(tmp_path: Path):
     result = CliRunner().invoke(cli, ["lint", "--isolated", str(path)], standalone_mode=False)
     assert result.return_value == 0
     assert [line.split()[2] for line in result.stdout.splitlines()] == ["EDS114"]
+
+
+def test_the_directive_is_read_in_any_case_and_with_blanks():
+    """Issue 18 item 21: these were silently no suppression at all."""
+    for comment in ("$ EDSCONV: IGNORE[EDS103]", "$ edsconv: ignore [EDS103]", "$ Edsconv : Ignore [ eds103 ]"):
+        assert codes(FAULTY.replace("ProdCode = 01001;", f"ProdCode = 01001;   {comment}")) == ["EDS114"]
+    assert codes(FAULTY.replace("MajRev = 1;", "MajRev = 1;   $ EDSCONV: IGNORE-FILE [EDS103]")) == ["EDS114"]
+
+
+def test_an_unknown_or_bracketless_directive_is_eds099_malformed():
+    for comment in ("$ edsconv: ignore-next[EDS103]", "$ edsconv: ignore EDS103", "$ edsconv: noqa[EDS103]"):
+        text = FAULTY.replace("ProdCode = 01001;", f"ProdCode = 01001;   {comment}")
+        found = lint.check(parse(text, "x.eds"), lint.EVERY_RULE)
+        assert [d.code for d in found] == ["EDS114", "EDS103", "EDS099"]
+        assert found[-1].message.startswith(f"malformed edsconv comment '{comment[2:]}': the directives are")
+    # a comment that merely mentions edsconv is no directive
+    assert codes(FAULTY.replace("MajRev = 1;", "MajRev = 1;   $ checked by edsconv: 0.2")) == ["EDS114", "EDS103"]

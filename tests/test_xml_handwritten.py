@@ -65,7 +65,7 @@ def entries(eds: EdsFile) -> dict[tuple[str, str], tuple]:
 
 def xml2eds(path: Path) -> tuple[EdsFile | None, list[str]]:
     """The EDS xml2eds writes for one profile, and its diagnostics of warning severity or worse."""
-    device, diagnostics = device_from_profiles([path])
+    device, diagnostics = device_from_profiles([path], network_alone=True)
     problems = [d.format() for d in diagnostics if d.severity >= Severity.WARNING]
     return (None if device is None else edsconv.parse(write(device_to_eds(device)))), problems
 

@@ -32,6 +32,7 @@ import re
 from collections.abc import Mapping
 from types import MappingProxyType
 
+from edsconv.limits import decimal
 from edsconv.spec_tables import (
     CLASSIFICATION_ENTRIES,
     CONNECTION_ENTRIES,
@@ -548,7 +549,7 @@ VENDOR_CLASS_SECTION = _section(
 def vendor_class_section(name: str) -> tuple[int, int] | None:
     """(class ID, vendor ID) of a ``[Class<ID>_Vendor<VendorID>]`` section name."""
     match = VENDOR_CLASS_SECTION_RE.fullmatch(name.strip().removeprefix("[").removesuffix("]").strip())
-    return (int(match.group(1)), int(match.group(2))) if match else None
+    return (decimal(match.group(1)), decimal(match.group(2))) if match else None
 
 
 # --- lookups --------------------------------------------------------------------------------

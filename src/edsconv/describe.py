@@ -28,6 +28,7 @@ from edsconv.model import (
 )
 from edsconv.model.cip import DeviceNetIo, IoData, Service
 from edsconv.model.cip_build import modelled
+from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
 from edsconv.model.epath import decode_path
 from edsconv.model.icon import Icon
 from edsconv.model.plain import plain
@@ -111,7 +112,22 @@ def describe_parameter(parameter: Parameter) -> dict:
         doc["scaling_links"] = links
     if parameter.size_adder:
         doc["size_adder"] = dict(zip(("minimum", "maximum", "default"), plain(parameter.size_adder), strict=False))
+    unread = _unread_values(parameter)
+    if unread:
+        doc["invalid"] = unread
     return doc
+
+
+#: the field index of each value show marks when it cannot be read
+_VALUE_FIELDS = {name: PARAMETER_FIELD_ATTRIBUTES.index(name) for name in ("minimum", "maximum", "default")}
+
+
+def _unread_values(parameter: Parameter) -> dict[str, str]:
+    """The minimum, maximum and default the file writes but that have no reading (a BOOL default
+    of 255: lint reports it), as written: show prints what the file says, marked, not a blank."""
+    fields = parameter.entry.fields if parameter.entry is not None else []
+    return {name: fields[index].raw or "" for name, index in _VALUE_FIELDS.items()
+            if getattr(parameter, name) is None and index < len(fields) and fields[index].value is not None}
 
 
 def _parameter_summary(parameter: Parameter) -> dict:

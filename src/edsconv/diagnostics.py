@@ -126,11 +126,10 @@ def _text(markdown: str) -> str:
 
 
 #: Every module that defines rules: :func:`load_rules` collects their module-level :class:`Rule` objects.
-RULE_MODULES = ("edsconv.lint", "edsconv.suppress", "edsconv.eds.reader_rules", "edsconv.model.values",
-                "edsconv.model.build", "edsconv.checks.structure_rules", "edsconv.checks.entity_rules",
-                "edsconv.checks.addressing_rules", "edsconv.checks.object_rules", "edsconv.checks.coherence_rules",
-                "edsconv.merge",
-                "edsconv.xml.validate", "edsconv.xml.convert",
+RULE_MODULES = ("edsconv.lint", "edsconv.suppress", "edsconv.eds.refusals", "edsconv.eds.reader_rules",
+                "edsconv.model.values", "edsconv.model.build", "edsconv.checks.structure_rules",
+                "edsconv.checks.entity_rules", "edsconv.checks.addressing_rules", "edsconv.checks.object_rules",
+                "edsconv.checks.coherence_rules", "edsconv.merge", "edsconv.xml.validate", "edsconv.xml.convert",
                 "edsconv.xml.device_read", "edsconv.verify.rules")
 
 

@@ -25,6 +25,7 @@ from pathlib import Path
 from edsconv.config import FileRules, Overrides, Resolver
 from edsconv.diagnostics import EVERYTHING, Diagnostic, Selection, Severity, rule
 from edsconv.eds.reader import parse
+from edsconv.eds.refusals import read_bytes
 from edsconv.eds.syntax import EdsFile
 from edsconv.fix import fix_source, fixes_of, raw_text
 from edsconv.parallel import file_size, run_all
@@ -97,7 +98,7 @@ def check(eds: EdsFile, rules: FileRules = EVERY_RULE) -> list[Diagnostic]:
 def lint_file(path: str, rules: FileRules = EVERY_RULE, fix: FixMode = FixMode.REPORT) -> FileReport:
     """Read and check one file (and fix it, as ``fix`` says); never raises for a problem of this file."""
     try:
-        data = Path(path).read_bytes()
+        data = read_bytes(path)  # never more than one byte past the size limit (EDS025)
         if fix is FixMode.REPORT:
             eds = parse(data, path)
             diagnostics = check(eds, rules)

@@ -24,6 +24,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
+from edsconv.limits import decimal
+
 # ---------------------------------------------------------------------------
 # Presence
 # ---------------------------------------------------------------------------
@@ -1113,7 +1115,7 @@ def section_spec(name: str) -> SectionSpec | None:
 def split_numbered(keyword: str) -> tuple[str, int | None]:
     """``"Param12"`` -> ``("Param", 12)``; un-numbered keywords -> ``(keyword, None)``."""
     m = _NUMBERED.fullmatch(keyword)
-    return (m.group(1), int(m.group(2))) if m else (keyword, None)
+    return (m.group(1), decimal(m.group(2))) if m else (keyword, None)
 
 
 def instance_number(keyword: str) -> int:

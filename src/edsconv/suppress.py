@@ -7,7 +7,10 @@ that line. ``$ edsconv: ignore-file[EDS005, EDS2]`` anywhere silences them in
 the whole file. Codes may be prefixes and aliases, as ``--ignore`` takes them.
 A suppression that silences nothing is itself reported (:data:`UNUSED_SUPPRESSION`),
 as ruff reports an unused ``# noqa``; a code whose rule is not selected for the
-file is not judged.
+file is not judged. The directive is read whatever its case and the blanks around
+``:`` and ``[`` (``$ EDSCONV: IGNORE [EDS103]``); one edsconv does not know
+(``edsconv: ignore-next[...]``, ``edsconv: ignore EDS103``) is EDS099 too, never
+silently nothing.
 """
 
 from __future__ import annotations
@@ -18,16 +21,22 @@ from dataclasses import dataclass
 
 from edsconv.diagnostics import Diagnostic, Severity, block, load_rules, rule
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Section
+from edsconv.limits import shown
 
 UNUSED_SUPPRESSION = rule(
     "EDS099", Severity.WARNING, "edsconv",
-    "An edsconv: ignore[...] comment suppresses nothing, or names no rule",
+    "An edsconv: ignore[...] comment suppresses nothing, names no rule, or is malformed",
     explanation="""
         A suppression comment (`$ edsconv: ignore[CODE]` on an entry, `$ edsconv: ignore-file[CODE]`
         for the file) names a code that no diagnostic in its reach carries, or a code that names
         no rule. A stale suppression would silently hide the next real fault there: remove the
         code (`edsconv lint --fix` does). A code whose rule is not selected for the file
         (`--select`, `ignore`, `per-file-ignores`) is not judged.
+
+        The directive is read in any case and with blanks around `:` and `[`
+        (`$ EDSCONV: Ignore [EDS103]` works). A comment that looks like a directive but is none
+        edsconv knows (`edsconv: ignore-next[EDS103]`, `edsconv: ignore EDS103` without brackets)
+        is reported as malformed rather than silently suppressing nothing; it has no automatic fix.
     """,
     bad=block("""
         [Device]
@@ -41,7 +50,11 @@ UNUSED_SUPPRESSION = rule(
 )
 
 #: ``edsconv: ignore[CODES]`` (an entry or a header line) and ``edsconv: ignore-file[CODES]`` (the file).
-SUPPRESSION = re.compile(r"edsconv:\s*ignore(?P<file>-file)?\[(?P<codes>[^\]]*)\]")
+SUPPRESSION = re.compile(r"edsconv\s*:\s*ignore(?P<file>-file)?\s*\[(?P<codes>[^\]]*)\]", re.IGNORECASE)
+#: What reads as an attempt at a directive: ``edsconv:`` and a word followed by ``[``, or a word of the
+#: ignore family without brackets. Not a directive of SUPPRESSION: EDS099, malformed.
+_DIRECTIVE_LIKE = re.compile(r"edsconv\s*:\s*(?:[A-Za-z][\w-]*\s*\[[^\]]*\]?|(?:ignore|noqa|disable)[\w-]*[^\n]*)",
+                             re.IGNORECASE)
 _CODE = re.compile(r"[^,\s]+")
 
 
@@ -88,8 +101,9 @@ def apply_suppressions(eds: EdsFile, diagnostics: Iterable[Diagnostic],
     """
     kept = list(diagnostics)
     found = suppressions(eds)
+    malformed = list(_malformed(eds)) if reports(UNUSED_SUPPRESSION.code) else []
     if not found:
-        return kept
+        return kept + malformed
     used: set[Suppression] = set()
     remaining = []
     for diagnostic in kept:
@@ -99,7 +113,24 @@ def apply_suppressions(eds: EdsFile, diagnostics: Iterable[Diagnostic],
             remaining.append(diagnostic)
     if reports(UNUSED_SUPPRESSION.code):
         remaining += [_unused(s, eds.path) for s in found if s not in used and _judged(s.code, reports)]
-    return remaining
+    return remaining + malformed
+
+
+def _malformed(eds: EdsFile) -> Iterator[Diagnostic]:
+    """EDS099 for each comment that attempts a directive edsconv does not know."""
+    for comments, _ in _comment_groups(eds):
+        for comment in comments:
+            if "edsconv" not in comment.text.lower():
+                continue
+            directives = [m.span() for m in SUPPRESSION.finditer(comment.text)]
+            for attempt in _DIRECTIVE_LIKE.finditer(comment.text):
+                if any(start <= attempt.start() < end for start, end in directives):
+                    continue
+                column = comment.column + 1 + attempt.start()
+                yield Diagnostic.of(UNUSED_SUPPRESSION, f"malformed edsconv comment {shown(attempt.group().strip())}: "
+                                    f"the directives are 'edsconv: ignore[CODES]' (this entry) and "
+                                    f"'edsconv: ignore-file[CODES]' (the file); it suppresses nothing",
+                                    comment.line, column, eds.path)
 
 
 def _judged(code: str, reports: Callable[[str], bool]) -> bool:

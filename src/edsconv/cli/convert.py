@@ -126,7 +126,24 @@ def _write_all(output_dir: Path, outputs: list[Output], force: bool, eds_file: P
               help="EDS file to write (default: standard output).")
 @click.option("--force", is_flag=True, help="Overwrite an existing output file.")
 def xml2eds_command(profiles: tuple[Path, ...], output: Path | None, force: bool) -> int:
-    """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS."""
+    """Convert ISO 15745-4 XML profiles (DEVICE.xml [COMMNET.xml]) into an EDS.
+
+    \b
+    The network profile must be the device's own: the same ProfileIdentification
+    (without -DEV / -COMM) and ProfileDate (XML008); a network profile alone
+    describes no device (XML009). A wrapper profile names the EDS next to it.
+
+    \b
+    Exit status:
+      0  converted, no errors
+      1  not converted: an invalid profile, profiles of two devices (XML008),
+         no device profile (XML009), a wrapper without its EDS (XML101)
+      2  could not run: a missing file, more than two profiles, a file that
+         cannot be written, an existing output without --force
+    """
+    if len(profiles) > 2:
+        raise click.UsageError(f"xml2eds takes a device profile and at most its network profile; "
+                               f"{len(profiles)} files were given")
     missing = [str(p) for p in profiles if not p.is_file()]
     if missing:
         raise CannotRun(f"cannot read: {', '.join(missing)}")

@@ -23,7 +23,8 @@ from edsconv.cli.common import (
 )
 from edsconv.config import Resolver
 from edsconv.eds.canonical import format_bytes
-from edsconv.eds.reader import load
+from edsconv.eds.reader import parse
+from edsconv.eds.refusals import read_bytes
 from edsconv.eds.syntax import EdsFile
 from edsconv.parallel import file_size, run_all
 from edsconv.paths import discover
@@ -91,8 +92,8 @@ def format_file(path: Path, write: bool, show_diff: bool) -> Formatted:
 
 def _format(path: Path, write: bool, show_diff: bool) -> Formatted:
     with reading(path):
-        original = path.read_bytes()
-        eds = load(path)
+        original = read_bytes(path)  # never more than one byte past the size limit (EDS025)
+        eds = parse(original, str(path))
     errors = [d for d in eds.diagnostics if d.severity.name == "ERROR"]
     if errors:
         return Formatted(NOT_FORMATTED, EXIT_FINDINGS, [

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import click
 
+from edsconv.cli.common import documentation
 
-@click.command("lsp")
+
+@click.command("lsp", epilog=documentation("editors.md"))
 @click.option("--stdio", is_flag=True, help="Speak LSP on stdin/stdout (the default and only transport; "
               "accepted because editors pass it).")
 def lsp_command(stdio: bool) -> int:
@@ -15,7 +17,9 @@ def lsp_command(stdio: bool) -> int:
     try:
         from edsconv.lsp.server import create_server
     except ImportError as error:
-        click.echo(f"edsconv lsp needs the lsp extra: pip install 'edsconv[lsp]' ({error})", err=True)
+        click.echo(f"edsconv lsp needs the lsp extra (pygls, lsprotocol; {error}). edsconv is not on PyPI: "
+                   f"install it from its clone, python3 -m pip install '/path/to/edsconv[lsp]', or as "
+                   f"\"edsconv[lsp] @ git+URL\" (docs/editors.md)", err=True)
         return EXIT_USAGE
     create_server(show_renderer=_show_text).start_io()
     return EXIT_CLEAN

@@ -130,9 +130,17 @@ def print_text(document: dict, sections: tuple[str, ...]) -> None:
 
 
 def _range(low: Any, high: Any) -> str:
-    if low is None and high is None:
+    """``low .. high``; an open end says so (``1000 .. (no max)``): a blank read as a typo."""
+    if low in (None, "") and high in (None, ""):
         return ""
-    return f"{_text(low)} .. {_text(high)}"
+    return f"{_text(low) or '(no min)'} .. {_text(high) or '(no max)'}"
+
+
+def _value(parameter: dict, name: str) -> str:
+    """A parameter's minimum, maximum or default, or what the file writes there marked invalid when it has
+    no reading (``255 (invalid)`` for a BOOL): show says what the file says."""
+    written = parameter.get("invalid", {}).get(name)
+    return f"{written} (invalid)" if written is not None else _text(parameter[name])
 
 
 def _joined(*parts: Any) -> str:
@@ -250,8 +258,8 @@ def _parameters(page: _Page, document: dict) -> None:
     for column in (0, 2, 3, 4):
         t.columns[column].no_wrap = True
     for p in document["parameters"]:
-        t.add_row(p["keyword"], _text(p["name"]), _type_text(p), _range(p["minimum"], p["maximum"]),
-                  _text(p["default"]), _text(p["units"]), "\n".join(_parameter_details(p)))
+        t.add_row(p["keyword"], _text(p["name"]), _type_text(p), _range(_value(p, "minimum"), _value(p, "maximum")),
+                  _value(p, "default"), _text(p["units"]), "\n".join(_parameter_details(p)))
     page.print(t)
 
 

@@ -33,6 +33,7 @@ from edsconv.eds.reader_rules import (
 from edsconv.eds.runs import comments_in, scan_run
 from edsconv.eds.statements import SyntaxBuilder
 from edsconv.eds.syntax import Entry, Field, Group
+from edsconv.limits import shown
 
 #: Syntax errors reported per file before the reader gives up (an assumed ';' included).
 MAX_SYNTAX_ERRORS = 100
@@ -297,8 +298,8 @@ def _error_message(error: UnexpectedInput, text: str, position: int) -> tuple[Ru
         allowed = getattr(error, "allowed", None) or set()
         line_text = text[position:text.find("\n", position) if "\n" in text[position:] else len(text)]
         snippet = line_text.strip()[:30]
-        return SYNTAX_ERROR, (f"unexpected {snippet!r}: expected {_expected(allowed)}" if allowed
-                              else f"unexpected {snippet!r}")
+        return SYNTAX_ERROR, (f"unexpected {shown(snippet)}: expected {_expected(allowed)}" if allowed
+                              else f"unexpected {shown(snippet)}")
     if isinstance(error, UnexpectedEOF):
         return SYNTAX_ERROR, f"the file ends early: expected {_expected(set(error.expected))}"
     assert isinstance(error, UnexpectedToken)

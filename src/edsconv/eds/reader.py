@@ -22,6 +22,7 @@ from pathlib import Path
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lexicon import entry_keyword, lexicon
 from edsconv.eds.reader_rules import CANOPEN_EDS, NO_SECTIONS, NOT_ASCII
+from edsconv.eds.refusals import read_bytes, refusal
 from edsconv.eds.runs import GAP_CHARACTERS, check_strings, simple_pieces
 from edsconv.eds.source import DecodedSource, LineIndex, decode
 from edsconv.eds.statements import SyntaxBuilder
@@ -68,8 +69,7 @@ def parse_with_lark(source: str | bytes, filename: str | None = None) -> EdsFile
 
 def load(path: str | Path) -> EdsFile:
     """Read an EDS file from disk (see :func:`parse`)."""
-    path = Path(path)
-    return parse(path.read_bytes(), str(path))
+    return parse(read_bytes(path), str(path))
 
 
 def _not_ascii_message(decoded: DecodedSource) -> str:
@@ -81,8 +81,15 @@ def _not_ascii_message(decoded: DecodedSource) -> str:
 
 
 def _parse(source: str | bytes, filename: str | None, read) -> EdsFile:
-    decoded = decode(source.encode("utf-8") if isinstance(source, str) else source)
-    del source  # the bytes are not needed once decoded
+    data = source.encode("utf-8") if isinstance(source, str) else source
+    del source
+    refused = refusal(data)
+    if refused is not None:  # too large, binary, UTF-16 without BOM, XML: one diagnostic, nothing read
+        eds = SyntaxBuilder("", filename, LineIndex("")).eds
+        eds.diagnostics.append(Diagnostic.of(*refused, 1, 1, filename))
+        return eds
+    decoded = decode(data)
+    del data  # the bytes are not needed once decoded
     text = decoded.text
     builder = SyntaxBuilder(text, filename, LineIndex(text))
     eds = builder.eds

@@ -19,6 +19,7 @@ from edsconv.eds.lexicon import lexicon, undefined_escapes
 from edsconv.eds.reader_rules import BAD_ESCAPE, LONG_PREFIX_ON_CONTINUATION, UNICODE_ESCAPE_IN_ASCII
 from edsconv.eds.source import LineIndex
 from edsconv.eds.syntax import Comment, Field, Scalar, String
+from edsconv.limits import shown
 
 _COMMENT = re.compile(r"\$[^\n]*")
 
@@ -67,7 +68,7 @@ def string_problems(raw: str, offset: int) -> Iterator[tuple[Rule, str, int]]:
     if "\\" in raw:
         for at, sequence, defined in undefined_escapes(raw, raw.startswith("L")):
             if not defined:
-                yield (BAD_ESCAPE, f"escape sequence {sequence!r} is not defined in Table C.4; the "
+                yield (BAD_ESCAPE, f"escape sequence {shown(sequence)} is not defined in Table C.4; the "
                        "string is rejected (write '\\\\' for a backslash)", offset + at)
             else:
                 yield UNICODE_ESCAPE_IN_ASCII, "\\u escapes are valid only in L\"...\" (UNICODE) strings", offset + at

@@ -42,6 +42,11 @@ def _wide_encoding(data: bytes) -> tuple[str, int] | None:
     return None
 
 
+def has_wide_bom(data: bytes) -> bool:
+    """Whether ``data`` starts with the byte order mark of UTF-16 or UTF-32."""
+    return _wide_encoding(data) is not None
+
+
 def decode(data: bytes) -> DecodedSource:
     """Decode EDS bytes and normalise every line end to ``\\n``."""
     wide = _wide_encoding(data)

@@ -18,6 +18,7 @@ from typing import Any
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Severity, rule
 from edsconv.eds.syntax import EdsFile, Entry, Field, Group, Scalar, String, Value, ValueKind
+from edsconv.limits import MAX_DIGITS, TOO_MANY_DIGITS, cut, shown
 from edsconv.model import (
     MODULE,
     MODULE_MEMBER_LIST,
@@ -43,7 +44,7 @@ from edsconv.model import (
 )
 from edsconv.model.cip_build import attach
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
-from edsconv.model.values import WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
+from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
 
 OBSOLETE_DATA_TYPE = rule(
     "EDS112", Severity.WARNING, "C.4.1.4.6", "A parameter names its data type by an obsolete Table C.16 identifier",
@@ -232,7 +233,7 @@ class _Builder:
         if plan.path and isinstance(value, String):
             return to_path(value, allow_references=True)
         if plan.data_type is None:
-            raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {plain(value)!r}")
+            raise ValueProblem(WRONG_KIND, f"expected {plan.names}, found {shown(plain(value))}")
         if plan.kept:
             return plain(value)
         if plan.converter is not None:
@@ -273,6 +274,7 @@ class _Builder:
                 if entry_spec is None:
                     self.device.extra_entries.setdefault(spec.name, []).append(self.generic(entry))
                 else:
+                    self.check_keyword_number(entry)
                     handler(entry, entry_spec)
         self.collect_comments()
         self.collect_unparsed()
@@ -281,6 +283,14 @@ class _Builder:
         for ref in iter_references(self.device):
             ref.target = self.device.resolve(ref.keyword)
         return self.device
+
+    def check_keyword_number(self, entry: Entry) -> None:
+        """EDS102 for the N of ``ParamN`` (and every numbered keyword) past the digits edsconv reads: no
+        instance number has more than 10 digits, and Python refuses to convert more than 4,300."""
+        family, number = tables.split_numbered(entry.keyword)
+        if number == TOO_MANY_DIGITS:
+            self.report(OUT_OF_RANGE, f"{cut(entry.keyword)}: the number after {family} has more than "
+                        f"{MAX_DIGITS} digits, outside every instance number's range", entry)
 
     def collect_comments(self) -> None:
         notes = self.device.comments

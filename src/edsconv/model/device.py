@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple, TypeGuard
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import EdsFile, Entry, Section
+from edsconv.limits import decimal
 from edsconv.model.values import PathItem, Revision, StringIMember
 
 if TYPE_CHECKING:
@@ -81,8 +82,8 @@ class Reference:
         if match is None:
             return None
         family, number, bit = match.groups()
-        return cls(f"{family}{number}", family, int(number), entry=entry, field_index=field_index,
-                   bit=int(bit) if bit is not None else None)
+        return cls(f"{family}{number}", family, decimal(number), entry=entry, field_index=field_index,
+                   bit=decimal(bit) if bit is not None else None)
 
 
 #: The model attribute of each single-field entry of [File], [Device], [ParamClass] and

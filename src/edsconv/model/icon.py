@@ -15,6 +15,8 @@ import binascii
 import re
 from dataclasses import dataclass, field
 
+from edsconv.limits import shown
+
 _PNG = b"\x89PNG\r\n\x1a\n"
 #: BITMAPCOREHEADER, BITMAPINFOHEADER, V4 and V5 header sizes: what a BMP image inside an ICO starts with
 _DIB_HEADER_SIZES = frozenset({12, 40, 108, 124})
@@ -60,7 +62,7 @@ def decode_icon(text: str) -> Icon:
         bad = next((c for c in compact if not re.fullmatch(r"[A-Za-z0-9+/=]", c)), None)
         if bad is None:  # every character is one of base64's, but '=' stands before the end
             return Icon(None, "not base64", problem="'=' pads only the end of base64 text")
-        return Icon(None, "not base64", problem=f"{bad!r} is not a base64 character")
+        return Icon(None, "not base64", problem=f"{shown(bad)} is not a base64 character")
     try:
         data = base64.b64decode(compact, validate=True)
     except binascii.Error as error:

@@ -30,6 +30,7 @@ from edsconv.diagnostics import Rule, Severity, block, rule
 from edsconv.eds.lexicon import undefined_escapes
 from edsconv.eds.reader_rules import BAD_ESCAPE, UNICODE_ESCAPE_IN_ASCII
 from edsconv.eds.syntax import Group, Scalar, String, Value, ValueKind
+from edsconv.limits import cut, decimal, shown
 
 WRONG_KIND = rule(
     "EDS101", Severity.ERROR, "C.4.1.3", "A field holds a value of the wrong kind for its data type",
@@ -317,11 +318,11 @@ def _integer(raw: str, type_name: str) -> int:
             raise ValueProblem(OUT_OF_RANGE, f"{raw} is outside the {type_name} range", clause=clause)
         return number
     if kind is not ValueKind.INTEGER:
-        raise ValueProblem(WRONG_KIND, f"expected an integer ({type_name}), found {raw!r}")
+        raise ValueProblem(WRONG_KIND, f"expected an integer ({type_name}), found {shown(raw)}")
     sign, digits = _sign_and_digits(raw)
-    number = sign * int(digits)
+    number = sign * decimal(digits)
     if not data_type.in_range(number):
-        raise ValueProblem(OUT_OF_RANGE, f"{raw} is outside the {type_name} range {data_type.minimum} to "
+        raise ValueProblem(OUT_OF_RANGE, f"{cut(raw)} is outside the {type_name} range {data_type.minimum} to "
                            f"{data_type.maximum}", clause=clause)
     if len(digits) > 1 and digits.startswith("0"):
         raise ValueNote(LEADING_ZERO, f"{raw} has leading zeros, which decimal notation does not allow "
@@ -343,7 +344,7 @@ def to_real(value: Value, type_name: str) -> float:
     if kind is ValueKind.REAL_WORD:
         return tables.FLOAT_SPECIAL_WORDS[raw]
     if kind not in (ValueKind.REAL, ValueKind.INTEGER):
-        raise ValueProblem(WRONG_KIND, f"expected a floating point value ({type_name}), found {raw!r}")
+        raise ValueProblem(WRONG_KIND, f"expected a floating point value ({type_name}), found {shown(raw)}")
     number = float(raw)
     if not data_type.in_range(number) and not _rounds_to_single(number, data_type):
         raise ValueProblem(OUT_OF_RANGE, f"{raw} is outside the {type_name} range", clause=_F)
@@ -399,7 +400,7 @@ def to_date(value: Value) -> datetime.date:
     raw = _scalar(value, "a date mm-dd-yyyy")
     match = _DATE.fullmatch(raw) or _YEAR_FIRST_DATE.fullmatch(raw)
     if not match:
-        raise ValueProblem(BAD_DATE, f"{raw!r} is not written mm-dd-yyyy")
+        raise ValueProblem(BAD_DATE, f"{shown(raw)} is not written mm-dd-yyyy")
     year_text = match["year"]
     year = int(year_text) + (1900 if len(year_text) == 2 else 0)
     try:
@@ -408,9 +409,9 @@ def to_date(value: Value) -> datetime.date:
         raise ValueProblem(BAD_DATE, f"{raw} is not a calendar date ({error})") from None
     written = f"{date.month:02d}-{date.day:02d}-{year_text}"
     if match.re is _YEAR_FIRST_DATE:
-        raise ValueNote(BAD_DATE, f"{raw!r} writes the year first; an EDS_Date is mm-dd-yyyy: {written}", date)
+        raise ValueNote(BAD_DATE, f"{shown(raw)} writes the year first; an EDS_Date is mm-dd-yyyy: {written}", date)
     if len(match["month"]) < 2 or len(match["day"]) < 2:
-        raise ValueNote(BAD_DATE, f"{raw!r}: write month and day with two digits: {written}", date)
+        raise ValueNote(BAD_DATE, f"{shown(raw)}: write month and day with two digits: {written}", date)
     low = tables.EDS_DATE_LIMITS["year"][0]
     if year < low:
         two_digits = f" ({year_text} has an implied leading 19)" if len(year_text) == 2 else ""
@@ -423,13 +424,13 @@ def to_time(value: Value) -> datetime.time:
     raw = _scalar(value, "a time hh:mm:ss")
     match = _TIME.fullmatch(raw)
     if not match:
-        raise ValueProblem(BAD_TIME, f"{raw!r} is not written hh:mm:ss")
+        raise ValueProblem(BAD_TIME, f"{shown(raw)} is not written hh:mm:ss")
     parts = {name: int(match[name]) for name in tables.EDS_TIME_OF_DAY_LIMITS}
     if not _within(tables.EDS_TIME_OF_DAY_LIMITS, parts):
         raise ValueProblem(BAD_TIME, f"{raw} is not a time of day (hours 00-23, minutes and seconds 00-59)")
     time = datetime.time(parts["hour"], parts["minute"], parts["second"])
     if any(len(part) < 2 for part in match.groups()):
-        raise ValueNote(BAD_TIME, f"{raw!r}: write hours, minutes and seconds with two digits: "
+        raise ValueNote(BAD_TIME, f"{shown(raw)}: write hours, minutes and seconds with two digits: "
                         f"{time.isoformat()}", time)
     return time
 
@@ -446,8 +447,8 @@ def to_revision(value: Value) -> Revision:
     raw = _scalar(value, "a revision Major.Minor")
     match = _REVISION.fullmatch(raw)
     if not match:
-        raise ValueProblem(BAD_REVISION, f"{raw!r} is not a revision Major.Minor")
-    revision = Revision(int(match["major"]), int(match["minor"]))
+        raise ValueProblem(BAD_REVISION, f"{shown(raw)} is not a revision Major.Minor")
+    revision = Revision(decimal(match["major"]), decimal(match["minor"]))
     if revision == Revision(0, 0):
         raise ValueProblem(BAD_REVISION, "revision 0.0 is invalid")
     # one digit each: within the limits and without leading zeros
@@ -478,12 +479,12 @@ def _text(parts: tuple[str, ...]) -> str:
     for part in value.parts:
         for _, sequence, defined in undefined_escapes(part, value.unicode):
             if not defined:
-                raise ValueProblem(BAD_ESCAPE, f"{sequence!r} is not in Table C.4: the string is rejected",
+                raise ValueProblem(BAD_ESCAPE, f"{shown(sequence)} is not in Table C.4: the string is rejected",
                                    reported=True)
             misplaced = misplaced or sequence
     text = value.text
     if misplaced:
-        raise ValueNote(UNICODE_ESCAPE_IN_ASCII, f"{misplaced!r} in an 8-bit string", text, reported=True)
+        raise ValueNote(UNICODE_ESCAPE_IN_ASCII, f"{shown(misplaced)} in an 8-bit string", text, reported=True)
     flaw = string_flaw(value)
     if flaw is not None:
         raise ValueNote(flaw[0], flaw[1], text, reported=True)
@@ -516,10 +517,10 @@ _URL_UNSAFE = re.compile(r'[\x00-\x20\x7f<>"{}|\\^\[\]`]|%(?![0-9A-Fa-f]{2})')
 def to_url(value: Value) -> str:
     text = to_text(value)
     if not _URL.match(text.strip()):
-        raise ValueNote(BAD_URL, f"{text!r} is not an http(s)://, ftp:// or file:// URL", text)
+        raise ValueNote(BAD_URL, f"{shown(text)} is not an http(s)://, ftp:// or file:// URL", text)
     unsafe = _URL_UNSAFE.search(text.strip())
     if unsafe:
-        raise ValueNote(BAD_URL, f"{text!r} holds {unsafe.group()!r}, which RFC 1738 allows in a URL only "
+        raise ValueNote(BAD_URL, f"{shown(text)} holds {shown(unsafe.group())}, which RFC 1738 allows in a URL only "
                         "encoded (%XX)", text)
     return text
 
@@ -527,7 +528,7 @@ def to_url(value: Value) -> str:
 def to_keyword(value: Value) -> str:
     raw = _scalar(value, "a keyword")
     if value.kind is not ValueKind.WORD:
-        raise ValueProblem(WRONG_KIND, f"expected a keyword, found {raw!r}")
+        raise ValueProblem(WRONG_KIND, f"expected a keyword, found {shown(raw)}")
     return raw
 
 
@@ -563,7 +564,7 @@ def to_stringi(value: Value) -> tuple[StringIMember, ...]:
         language, type_code, charset, text = (f.value or Scalar("") for f in member.fields)  # none is empty
         language_text = _read(notes, to_text, language)
         if len(language_text) != 3:
-            raise ValueProblem(BAD_STRINGI, f"language code {language_text!r} is not three letters (ISO 639-2/T)")
+            raise ValueProblem(BAD_STRINGI, f"language code {shown(language_text)} is not three letters (ISO 639-2/T)")
         code = _read(notes, to_integer, type_code, "USINT")
         if code not in tables.STRINGI_STRING_TYPES:
             raise ValueProblem(BAD_STRINGI, f"0x{code:02X} is not a STRING, STRING2, STRINGN or SHORT_STRING code")
@@ -626,21 +627,21 @@ def path_items(text: str, allow_references: bool = True) -> tuple[PathItem, ...]
     while position < stripped_end:
         match = _PATH_TOKEN.match(text, position)
         if not match:
-            raise ValueProblem(BAD_EPATH, f"path {text!r}: {text[position:].strip()[:12]!r} is not a "
+            raise ValueProblem(BAD_EPATH, f"path {shown(text)}: {shown(text[position:].strip()[:12])} is not a "
                                "two-digit hexadecimal byte")
         position = match.end()
         if match["byte"]:
             items.append(PathItem(byte=int(match["byte"], 16)))
             continue
         if not allow_references:
-            raise ValueProblem(BAD_EPATH, f"path {text!r}: only hexadecimal bytes are allowed here")
+            raise ValueProblem(BAD_EPATH, f"path {shown(text)}: only hexadecimal bytes are allowed here")
         name = match["bracketed"] or match["word"]
         if name in tables.PATH_KEYWORDS and not match["bracketed"]:
             items.append(PathItem(keyword=name))
         elif tables.PATH_REFERENCE_RE.fullmatch(name):
             items.append(PathItem(reference=name, local=bool(match["bracketed"])))
         else:
-            raise ValueProblem(BAD_EPATH, f"path {text!r}: {name!r} is neither a byte, [ParamN], ParamN nor "
+            raise ValueProblem(BAD_EPATH, f"path {shown(text)}: {shown(name)} is neither a byte, [ParamN], ParamN nor "
                                "SLOT / SLOT_MINUS_ONE / SYMBOL_ANSI")
     return tuple(items)
 

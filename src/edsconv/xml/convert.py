@@ -14,6 +14,7 @@ next to it.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -24,7 +25,7 @@ from edsconv.eds.syntax import EdsFile
 from edsconv.model import Device
 from edsconv.xml.common import Header, header_element, is_xml_text, serialise
 from edsconv.xml.datamodel import collapse, string_value
-from edsconv.xml.safe import XmlError, parse_xml
+from edsconv.xml.safe import XmlDocument, XmlError, parse_xml
 
 WRAPPER_NOT_FOUND = rule(
     "XML101", Severity.ERROR, "C.2.2.1", "The EDS a wrapper profile references is not next to it",
@@ -104,6 +105,30 @@ NOT_ASCII = rule(
     """,
     bad='`<edsconv:Comment>Müller</edsconv:Comment>`',
     good='`<edsconv:Comment>Mueller</edsconv:Comment>`',
+)
+PROFILES_OF_TWO_DEVICES = rule(
+    "XML008", Severity.ERROR, "C.2.1", "The device and network profiles given to xml2eds describe different devices",
+    explanation="""
+        xml2eds joins a device profile and a network profile into one EDS, so both must
+        describe the same device: their ProfileIdentification, without the `-DEV` and
+        `-COMM` endings eds2xml gives them, and their ProfileDate are the same (eds2xml
+        writes both from the same EDS). Another device's network profile would name
+        parameters and assemblies the device profile does not have. Nothing is written.
+    """,
+    bad="`edsconv xml2eds adapter_device.xml scanner_commnet.xml`",
+    good="`edsconv xml2eds adapter_device.xml adapter_commnet.xml`",
+)
+PROFILES_NOT_ONE_DEVICE = rule(
+    "XML009", Severity.ERROR, "C.2.1", "The profiles given to xml2eds are not one device profile and its network",
+    explanation="""
+        xml2eds reads one device profile, optionally followed by that device's
+        communication network profile (or the wrapper profiles of one EDS). A network
+        profile alone has no identity, parameters or assemblies: the EDS would hold only
+        [Connection Manager] and [Port]. Two device profiles are two devices. Nothing is
+        written.
+    """,
+    bad="`edsconv xml2eds adapter_commnet.xml`",
+    good="`edsconv xml2eds adapter_device.xml adapter_commnet.xml`",
 )
 #: The [Device] entries the profile's identity is made of (ProfileIdentification, ProdRevision).
 IDENTITY = (("VendCode", "vendor_code"), ("ProdType", "product_type"), ("ProdCode", "product_code"),
@@ -250,10 +275,13 @@ _NOT_ASCII = re.compile(r"[^\x00-\x7f]")
 def eds_text(device: Device, newline: str, path: str | None = None) -> str:
     """The EDS of ``device`` (canonical form) as text, ASCII only (C.4.1.3.2): strings carry their
     escapes; :class:`NotConverted` (XML104) when a comment, a name or a keyword holds another character."""
+    from edsconv.eds.canonical import write_canonical
     from edsconv.eds.from_model import device_to_eds
+    from edsconv.eds.reader import parse
     from edsconv.eds.writer import write
 
-    text = write(device_to_eds(device), newline=newline)
+    # canonical as fmt lays it out (fmt --check accepts it): the model's EDS, read back and formatted
+    text = write_canonical(parse(write(device_to_eds(device))), newline=newline)
     found = _NOT_ASCII.search(text)
     if found is None:
         return text
@@ -326,26 +354,58 @@ def find_wrapped_eds(xml_path: Path, root: etree._Element) -> tuple[Path | None,
     return None, described
 
 
-def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnostic]]:
-    """Read, validate and convert XML profiles into one Device; a wrapper resolves to its EDS."""
-    from edsconv import build, load
-    from edsconv.xml.commnet import read_commnet_profile
-    from edsconv.xml.device_read import read_device_profile
-    from edsconv.xml.validate import kind_title, read_and_validate
+def device_from_profiles(paths: list[Path], *, network_alone: bool = False) -> tuple[Device | None, list[Diagnostic]]:
+    """Read, validate and convert XML profiles into one Device; a wrapper resolves to its EDS.
 
-    device = Device()
+    The profiles are read and validated first, then checked to make one device (a device
+    profile, with at most the network profile of the same device: XML008, XML009), then converted.
+    ``network_alone``: a network profile may stand alone (what it says, without a device; for tests
+    of the network reader)."""
+    from edsconv.xml.validate import read_and_validate
+
+    read: list[tuple[Path, str, XmlDocument]] = []
     diagnostics: list[Diagnostic] = []
     for path in paths:
         document, report = read_and_validate(path)
         diagnostics.extend(report.diagnostics)
         if document is None or has_errors(report.diagnostics):
             return None, diagnostics
-        kind = report.kind.name if report.kind else ""
+        if report.kind is None or report.kind.name not in _READ_KINDS:
+            diagnostics.append(_not_a_profile(path, report.kind))
+            return None, diagnostics
+        read.append((path, report.kind.name, document))
+    refusals = [] if network_alone and len(read) == 1 else list(_pairing_refusals(read))
+    if refusals:
+        return None, diagnostics + refusals
+    return _converted(read, diagnostics)
+
+
+#: The profile kinds xml2eds reads.
+_READ_KINDS = ("cip-device", "ethernetip-commnet", "eds-device-wrapper", "eds-commnet-wrapper")
+
+
+def _not_a_profile(path: Path, kind) -> Diagnostic:
+    from edsconv.xml.validate import kind_title
+
+    what = kind_title(kind) if kind else "a profile of unknown kind"
+    return Diagnostic.of(NOT_A_PROFILE, f"not an EtherNet/IP device, network or EDS wrapper profile: {what}",
+                         1, 1, str(path))
+
+
+def _converted(read: list[tuple[Path, str, XmlDocument]],
+               diagnostics: list[Diagnostic]) -> tuple[Device | None, list[Diagnostic]]:
+    """The Device of profiles that make one device (a wrapper: the EDS it names)."""
+    from edsconv import build, load
+    from edsconv.xml.commnet import read_commnet_profile
+    from edsconv.xml.device_read import read_device_profile
+
+    device = Device()
+    for path, kind, document in read:
         if kind == "cip-device":
             diagnostics.extend(read_device_profile(document, device))
         elif kind == "ethernetip-commnet":
             diagnostics.extend(read_commnet_profile(document, device))
-        elif kind in ("eds-device-wrapper", "eds-commnet-wrapper"):
+        else:
             found, described = find_wrapped_eds(path, document.tree.getroot())
             if found is None:
                 diagnostics.append(Diagnostic.of(WRAPPER_NOT_FOUND, f"the wrapper references an EDS ({described}); "
@@ -354,9 +414,36 @@ def device_from_profiles(paths: list[Path]) -> tuple[Device | None, list[Diagnos
             eds = load(found)
             diagnostics.extend(eds.diagnostics)
             return build(eds), diagnostics
-        else:
-            what = kind_title(report.kind) if report.kind else "a profile of unknown kind"
-            diagnostics.append(Diagnostic.of(NOT_A_PROFILE, f"not an EtherNet/IP device, network or EDS wrapper "
-                                             f"profile: {what}", 1, 1, str(path)))
-            return None, diagnostics
     return device, diagnostics
+
+
+#: ProfileIdentification's ending by kind, as eds2xml writes it (docs/mapping.md, "Profile header").
+_SUFFIXES = {"cip-device": "-DEV", "ethernetip-commnet": "-COMM", "eds-device-wrapper": "-DEV",
+             "eds-commnet-wrapper": "-COMM"}
+
+
+def _header_text(document: XmlDocument, tag: str) -> str:
+    element = document.tree.getroot().find(f"ProfileHeader/{tag}")
+    return collapse(string_value(element)) if element is not None else ""
+
+
+def _pairing_refusals(read: list[tuple[Path, str, XmlDocument]]) -> Iterator[Diagnostic]:
+    """XML009 unless the profiles are one device profile and at most one network profile (or the
+    wrappers of one EDS); XML008 when a pair's ProfileIdentification (without -DEV / -COMM) or
+    ProfileDate differ: the network profile of another device, or of another conversion."""
+    kinds = [kind for _, kind, _ in read]
+    wrappers = all(kind.startswith("eds-") for kind in kinds)
+    devices = sum(kind in ("cip-device", "eds-device-wrapper") for kind in kinds)
+    path = read[-1][0]
+    if devices != 1 and not (wrappers and len(kinds) == 1):
+        what = "a network profile alone describes no device" if devices == 0 else "two device profiles"
+        yield Diagnostic.of(PROFILES_NOT_ONE_DEVICE, f"{what}: give the device profile (DEVICE.xml), and its "
+                            f"network profile (COMMNET.xml) after it", 1, 1, str(path))
+    elif len(read) == 2:
+        first, second = ((_header_text(document, "ProfileIdentification").removesuffix(_SUFFIXES[kind]),
+                          _header_text(document, "ProfileDate"), path) for path, kind, document in read)
+        if first[:2] != second[:2]:
+            yield Diagnostic.of(PROFILES_OF_TWO_DEVICES, f"the profiles describe different devices: "
+                                f"{first[2].name} is {first[0]!r} of {first[1]}, {second[2].name} is "
+                                f"{second[0]!r} of {second[1]} (ProfileIdentification without -DEV/-COMM, "
+                                f"ProfileDate)", 1, 1, str(second[2]))

@@ -120,7 +120,7 @@ def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES, path: str | None = No
         line, column = error.position
         # libxml2 repeats the position at the end of its message; the diagnostic carries it already.
         message = re.sub(r", line \d+, column \d+$", "", error.msg)
-        raise XmlSyntaxError(f"not well-formed: {message}", line, column) from None
+        raise XmlSyntaxError(f"not well-formed: {_plain(message)}{_eds_hint(data)}", line, column) from None
     tree = root.getroottree()
     dtd = tree.docinfo.internalDTD
     # lxml-stubs 0.5 do not declare DTD.iterentities
@@ -128,6 +128,23 @@ def parse_xml(data: bytes, max_bytes: int = MAX_XML_BYTES, path: str | None = No
         # Reached only by encodings the byte scan does not cover.
         raise UnsafeXmlError(_ENTITY_MESSAGE, 1, 1)
     return XmlDocument(tree, data.decode(tree.docinfo.encoding or "utf-8", errors="replace").splitlines(), path)
+
+
+#: libxml2's advice to use an option a user cannot set, in plain words
+_EXCESSIVE_DEPTH = re.compile(r"Excessive depth in document: (\d+),? use XML_PARSE_HUGE option")
+#: what an EDS starts with: a comment or a section header (after a UTF-8 byte order mark)
+_EDS_START = re.compile(rb"(?:\xef\xbb\xbf)?\s*(?:\$|\[[^\]\n]*\])")
+
+
+def _plain(message: str) -> str:
+    return _EXCESSIVE_DEPTH.sub(r"elements nested deeper than \1 levels refused", message)
+
+
+def _eds_hint(data: bytes) -> str:
+    """A pointer to the right command when an EDS is given where a profile is expected."""
+    if _EDS_START.match(data[:4096]):
+        return "; this looks like an EDS file: `edsconv lint` checks it, `edsconv eds2xml` converts it"
+    return ""
 
 
 def _refuse_entity_declarations(data: bytes) -> None:

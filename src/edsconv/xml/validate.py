@@ -416,9 +416,25 @@ def _name(element: object) -> str:
     return etree.QName(cast(etree._Element, element)).localname
 
 
+#: how xmlschema names a wildcard among the expected tags: "from '##any' namespace/s"
+_WILDCARD = re.compile(r"from (?P<namespaces>.*) namespace/s")
+_WILDCARD_WORDS = {"'##any'": "an element of any namespace", "'##other'": "an element of another namespace",
+                   "'##local'": "an element without a namespace", "'##targetNamespace'": "an element of this namespace"}
+
+
+def _expected_tag(tag: str) -> str:
+    """``<Name>`` for an element; a wildcard in words ("an element of any namespace"), not xmlschema's
+    "<from '##any' namespace/s>"."""
+    wildcard = _WILDCARD.fullmatch(tag)
+    if wildcard is None:
+        return f"<{tag}>"
+    namespaces = wildcard["namespaces"]
+    return _WILDCARD_WORDS.get(namespaces, f"an element of the namespace {namespaces}")
+
+
 def _content_model_reason(error: XMLSchemaChildrenValidationError) -> str:
     parent = _name(error.elem) if error.elem is not None else "the element"
-    expected = " or ".join(f"<{tag}>" for tag in getattr(error, "expected_tags", ()) or ())
+    expected = " or ".join(map(_expected_tag, getattr(error, "expected_tags", ()) or ()))
     child = error.invalid_child
     if child is not None:
         found = f"<{_name(child)}> is not allowed here (child {error.index + 1} of <{parent}>)"

@@ -77,7 +77,7 @@ def test_json_format(files):
     result = run("--format", "json", files["broken"])
     assert result.returncode == 1
     document = json.loads(result.stdout)
-    assert document["summary"] == {"files": 1, "errors": 2, "warnings": 0}
+    assert document["summary"] == {"files": 1, "errors": 2, "warnings": 0, "notes": 0}
     (model,) = document["files"]
     section = model["sections"][0]
     assert section["name"] == "File"

@@ -12,6 +12,7 @@ from conftest import REPO
 from edsconv import report, rule_docs
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.report import FileReport
+from edsconv.resources import data_dir
 
 
 def diagnostic(code: str, message: str, line: int, column: int, severity: Severity, path: str) -> Diagnostic:
@@ -120,7 +121,7 @@ def test_sarif_rules_carry_their_documentation_and_the_declared_urls():
     # pyproject.toml's [project.urls] Repository, read from the installed metadata
     assert driver["informationUri"] == report.project_url() == "https://edsconv.invalid/edsconv"
     # no public repository (the .invalid placeholder): the link opens the installed docs/rules.md
-    assert eds002["helpUri"] == (REPO / "docs" / "rules.md").as_uri() + "#eds002"
+    assert eds002["helpUri"] == (data_dir("docs") / "rules.md").as_uri() + "#eds002"  # the checkout's or the wheel's
 
 
 def test_sarif_fingerprints_survive_moved_lines_and_tell_results_on_one_line_apart(tmp_path: Path):

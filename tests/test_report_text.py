@@ -21,6 +21,7 @@ from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.fix import Edit, apply_edits
 from edsconv.lint import lint_file
 from edsconv.report import FileReport
+from edsconv.resources import data_dir
 from test_lint import GOOD, edsconv, run
 from test_report import validate_sarif
 
@@ -114,7 +115,7 @@ def test_full_shows_the_line_with_a_caret_under_the_field_and_the_rule_link(mixe
         "   |",
         "18 |         ProdCode = 01001;",
         "   |                    ^^^^^",
-        f"   = docs: {(REPO / 'docs' / 'rules.md').as_uri()}#eds103",
+        f"   = docs: {(data_dir('docs') / 'rules.md').as_uri()}#eds103",
     ]
 
 

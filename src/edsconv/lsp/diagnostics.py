@@ -56,16 +56,21 @@ class Publisher:
     """Publishes the diagnostics of each document once its text has settled."""
 
     def __init__(self, server: LanguageServer, analyses: Analyses,
-                 settings: Callable[[str], Settings]) -> None:
+                 settings: Callable[[str], Settings], pulls: Callable[[], bool] = lambda: False) -> None:
         self._server = server
         self._analyses = analyses
         self._settings = settings
+        #: True when the client pulls the diagnostics of its documents (``textDocument/diagnostic``):
+        #: then nothing is pushed, or each problem would be shown twice
+        self._pulls = pulls
         self._pending: dict[str, asyncio.Task] = {}
         #: the configuration errors already shown (each once, not on every keystroke)
         self._reported: set[str] = set()
 
     def schedule(self, uri: str, delay: float = 0.0) -> None:
         """Check ``uri`` after ``delay`` seconds; a newer call for the same document replaces this one."""
+        if self._pulls():
+            return
         pending = self._pending.pop(uri, None)
         if pending is not None:
             pending.cancel()
@@ -75,7 +80,8 @@ class Publisher:
         pending = self._pending.pop(uri, None)
         if pending is not None:
             pending.cancel()
-        self._server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        if not self._pulls():
+            self._server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
 
     async def _publish(self, uri: str, delay: float) -> None:
         await asyncio.sleep(delay)
@@ -90,6 +96,15 @@ class Publisher:
         documents = self._server.workspace.text_documents
         if uri not in documents or documents[uri].source != text:
             return  # changed while it was being checked: the newer text's own check publishes
+        items = self.items(uri, analysis)
+        self._server.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri=uri, diagnostics=items, version=version))
+        if self._pending.get(uri) is asyncio.current_task():
+            del self._pending[uri]
+
+    def items(self, uri: str, analysis: Analysis) -> list[types.Diagnostic]:
+        """The LSP diagnostics of ``analysis`` that the document's settings report (pushed or pulled);
+        a configuration that cannot be read is said once."""
         positions = Positions(self._server.workspace.position_codec, analysis.lines)
         settings = self._settings(uri)
         if settings.error is not None and settings.error not in self._reported:
@@ -97,8 +112,4 @@ class Publisher:
             self._server.window_show_message(types.ShowMessageParams(
                 types.MessageType.Warning, f"edsconv: the configuration cannot be read, the defaults apply: "
                                            f"{settings.error}"))
-        items = [to_lsp(d, analysis, positions) for d in settings.kept(analysis.eds, analysis.diagnostics)]
-        self._server.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri=uri, diagnostics=items, version=version))
-        if self._pending.get(uri) is asyncio.current_task():
-            del self._pending[uri]
+        return [to_lsp(d, analysis, positions) for d in settings.kept(analysis.eds, analysis.diagnostics)]

@@ -15,6 +15,10 @@ from edsconv.lsp.positions import Positions
 from edsconv.lsp.server import EdsLanguageServer
 from edsconv.lsp.workspace import Symbol, matches, symbols_of
 
+#: Pulled diagnostics: a document's depend on it alone; the workspace's files are reported too.
+DIAGNOSTIC_OPTIONS = types.DiagnosticOptions(inter_file_dependencies=False, workspace_diagnostics=True,
+                                             identifier="edsconv")
+
 
 def register(server: EdsLanguageServer) -> None:
     _register_highlighting(server)
@@ -76,6 +80,19 @@ def _register_workspace(server: EdsLanguageServer) -> None:
     @server.feature(types.WORKSPACE_DID_CHANGE_WORKSPACE_FOLDERS)
     def on_folders_changed(ls: EdsLanguageServer, params: types.DidChangeWorkspaceFoldersParams) -> None:
         ls.workspace_checker.start(ls.folders(), lambda uri: uri in ls.workspace.text_documents)
+
+    @server.feature(types.TEXT_DOCUMENT_DIAGNOSTIC, DIAGNOSTIC_OPTIONS)
+    async def on_document_diagnostic(
+            ls: EdsLanguageServer, params: types.DocumentDiagnosticParams) -> types.RelatedFullDocumentDiagnosticReport:
+        analysis, _ = await ls.current(params.text_document.uri)
+        return types.RelatedFullDocumentDiagnosticReport(items=ls.publisher.items(params.text_document.uri, analysis))
+
+    @server.feature(types.WORKSPACE_DIAGNOSTIC)
+    async def on_workspace_diagnostic(ls: EdsLanguageServer,
+                                      params: types.WorkspaceDiagnosticParams) -> types.WorkspaceDiagnosticReport:
+        previous = {p.uri: p.value for p in params.previous_result_ids}
+        return types.WorkspaceDiagnosticReport(items=await ls.workspace_checker.reports(
+            ls.folders(), lambda uri: uri in ls.workspace.text_documents, previous))
 
     @server.feature(types.WORKSPACE_SYMBOL)
     async def on_workspace_symbol(ls: EdsLanguageServer,

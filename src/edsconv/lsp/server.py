@@ -48,15 +48,29 @@ class EdsLanguageServer(LanguageServer):
             version = "0"
         super().__init__(NAME, version, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
         self.analyses = Analyses()
-        self.publisher = Publisher(self, self.analyses, self.settings)
+        self.publisher = Publisher(self, self.analyses, self.settings, lambda: self.pulls)
         self.show_renderer = show_renderer
         self.workspace_checker = WorkspaceChecker(self.publish_file, self.settings,
                                                   lambda: self.workspace.position_codec)
         self._watching = False
 
+    @property
+    def pulls(self) -> bool:
+        """True when the client pulls diagnostics (``textDocument/diagnostic``, LSP 3.17): the server then
+        answers its pulls and pushes nothing."""
+        text_document = self.client_capabilities.text_document
+        return text_document is not None and text_document.diagnostic is not None
+
+    def refresh_pulled(self) -> None:
+        """Ask a client that pulls diagnostics to pull them again (the configuration changed), if it can be asked."""
+        workspace = self.client_capabilities.workspace
+        if self.pulls and workspace is not None and workspace.diagnostics is not None and \
+                workspace.diagnostics.refresh_support:
+            self.workspace_diagnostic_refresh(None)
+
     def publish_file(self, uri: str, diagnostics: list[types.Diagnostic]) -> None:
         """Publish the diagnostics of a file no editor has open (the workspace's background check)."""
-        if uri not in self.workspace.text_documents:
+        if not self.pulls and uri not in self.workspace.text_documents:
             self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics))
 
     def folders(self) -> list[str]:
@@ -125,6 +139,7 @@ def _register_documents(server: EdsLanguageServer) -> None:
         if any(change.uri.rsplit("/", 1)[-1] in CONFIGURATION_FILES for change in params.changes):
             for uri in list(ls.workspace.text_documents):
                 ls.publisher.schedule(uri)
+            ls.refresh_pulled()
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: EdsLanguageServer, params: types.DidOpenTextDocumentParams) -> None:

@@ -132,12 +132,31 @@ class WorkspaceChecker:
                 any(os.path.commonpath([folder, path]) == folder for folder in folders if folder):
             asyncio.ensure_future(self.check(path, changed=True))
 
-    async def _check_all(self, folders: list[str], is_open: Callable[[str], bool]) -> None:
+    async def _check_all(self, folders: list[str], is_open: Callable[[str], bool]) -> list[str]:
         loop = asyncio.get_running_loop()
         paths = await loop.run_in_executor(None, eds_files, folders)
         for path in paths:
             if not is_open(self.uri(path)):
                 await self.check(path)
+        return paths
+
+    async def reports(self, folders: list[str], is_open: Callable[[str], bool],
+                      previous: dict[str, str]) -> list[types.WorkspaceDocumentDiagnosticReport]:
+        """``workspace/diagnostic``: a report for each file of the folders no editor has open, "unchanged"
+        where the client's ``previous`` result id (by URI) is the file's size and time of its last check."""
+        if self._task is not None and not self._task.done():
+            await asyncio.shield(self._task)  # the background check fills what the reports are made of
+        found = []
+        for path in await self._check_all(folders, is_open):
+            uri, checked = self.uri(path), self._checked.get(path)
+            if checked is None or is_open(uri):
+                continue
+            result_id = f"{checked.stamp[0]}-{checked.stamp[1]}"
+            found.append(types.WorkspaceUnchangedDocumentDiagnosticReport(uri=uri, result_id=result_id)
+                         if previous.get(uri) == result_id else
+                         types.WorkspaceFullDocumentDiagnosticReport(uri=uri, items=checked.diagnostics,
+                                                                     result_id=result_id))
+        return found
 
     async def check(self, path: str, changed: bool = False) -> None:
         """Check the file at ``path`` as it is on disk and publish; unless ``changed``, a file whose

@@ -323,3 +323,23 @@ def test_real_corpus_counts():
         _, diagnostics = edsconv.analyse(edsconv.load(path))
         counts.update(d.code for d in diagnostics if d.code in OWN_CODES)
     assert dict(counts) == REAL_COUNTS
+
+
+def test_enum_ranges_find_each_enum_once_not_by_a_search_per_parameter(monkeypatch: pytest.MonkeyPatch) -> None:
+    """EDS351 looked up EnumN by a search of [Params] per parameter: quadratic (10,000 dense parameters took
+    5 s of a 7 s check). Counting the searches catches that without a timing."""
+    from edsconv.eds.syntax import Section
+
+    params = [PARAM_RPI] + [f'Param{n} = 0,,,0x0002,0xC6,1,"P","","",0,2,0;' for n in range(2, 402)]
+    enums = [f'Enum{n} = 0,"Off",1,"On",3,"Test";' for n in range(2, 402)]
+    searches = collections.Counter()
+    original = Section.entry
+
+    def counted(self: Section, keyword: str):
+        searches[self.name] += 1
+        return original(self, keyword)
+
+    monkeypatch.setattr(Section, "entry", counted)
+    device, diagnostics = edsconv.analyse(edsconv.parse(eds(params=params + enums)))
+    assert sum(d.code == "EDS351" for d in diagnostics) == 400  # 3 is outside 0..2 in each
+    assert searches["Params"] <= 10

@@ -113,9 +113,12 @@ def enum_ranges(ctx: Context) -> Iterator[Diagnostic]:
     params = ctx.eds.section("Params")
     if params is None:
         return
+    entries: dict[str, Entry] = {}
+    for entry in params.entries:  # the first of each keyword, as Section.entry finds it: one pass, not one per EnumN
+        entries.setdefault(entry.keyword, entry)
     for parameter in ctx.device.parameters.values():
         bounds = _range(parameter) if parameter.family in _ENUM_OF else None
-        enum: Entry | None = params.entry(f"{_ENUM_OF[parameter.family]}{parameter.number}") if bounds else None
+        enum = entries.get(f"{_ENUM_OF[parameter.family]}{parameter.number}") if bounds else None
         if enum is None or bounds is None:
             continue
         for item in enum.fields[::2]:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import asyncio
-import sys
 
 import pytest
 
@@ -12,21 +11,18 @@ pytest_lsp = pytest.importorskip("pytest_lsp")
 
 from lsprotocol import types  # noqa: E402
 from pygls.exceptions import JsonRpcContentModified, JsonRpcException, JsonRpcRequestCancelled  # noqa: E402
-from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
+from pytest_lsp import LanguageClient  # noqa: E402
 
 import edsconv  # noqa: E402
 from conftest import REPO  # noqa: E402
 from edsconv.eds.canonical import write_canonical  # noqa: E402
+from lsp_support import BROKEN, EXAMPLE, SERVER  # noqa: E402
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
-EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text()
-#: io_adapter.eds with Assem100's member reference Param2 (line 95) changed to the undefined Param9
-BROKEN = EXAMPLE.replace("8,Param2,\n                8,;", "8,Param9,\n                8,;")
 INITIALIZE: dict[str, types.InitializeResult] = {}
 
 
-SERVER = ClientServerConfig(server_command=[sys.executable, "-m", "edsconv", "lsp"])
 
 
 @pytest_lsp.fixture(scope="module", config=SERVER)

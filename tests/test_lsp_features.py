@@ -5,7 +5,6 @@ symbols and diagnostics of files no editor has open, and the commands."""
 from __future__ import annotations
 
 import shutil
-import sys
 from pathlib import Path
 
 import pytest
@@ -14,18 +13,13 @@ pytest.importorskip("pygls")
 pytest_lsp = pytest.importorskip("pytest_lsp")
 
 from lsprotocol import types  # noqa: E402
-from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
+from pytest_lsp import LanguageClient  # noqa: E402
 
-from conftest import REPO  # noqa: E402
 from edsconv.lsp.semantic_tokens import TOKEN_MODIFIERS, TOKEN_TYPES  # noqa: E402
+from lsp_support import BROKEN, EXAMPLE, EXAMPLE_PATH, SERVER  # noqa: E402
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
-EXAMPLE_PATH = REPO / "corpus" / "examples" / "io_adapter.eds"
-EXAMPLE = EXAMPLE_PATH.read_text()
-#: io_adapter.eds with Assem100's member reference Param2 changed to the undefined Param9
-BROKEN = EXAMPLE.replace("8,Param2,\n                8,;", "8,Param9,\n                8,;")
-SERVER = ClientServerConfig(server_command=[sys.executable, "-m", "edsconv", "lsp"])
 STATE: dict = {}
 
 

@@ -5,7 +5,6 @@ problem is shown twice; a client that does not pull gets pushes (tests/test_lsp_
 from __future__ import annotations
 
 import shutil
-import sys
 
 import pytest
 
@@ -13,16 +12,12 @@ pytest.importorskip("pygls")
 pytest_lsp = pytest.importorskip("pytest_lsp")
 
 from lsprotocol import types  # noqa: E402
-from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
+from pytest_lsp import LanguageClient  # noqa: E402
 
-from conftest import REPO  # noqa: E402
+from lsp_support import BROKEN, EXAMPLE, EXAMPLE_PATH, SERVER  # noqa: E402
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
-EXAMPLE_PATH = REPO / "corpus" / "examples" / "io_adapter.eds"
-EXAMPLE = EXAMPLE_PATH.read_text()
-BROKEN = EXAMPLE.replace("8,Param2,\n                8,;", "8,Param9,\n                8,;")
-SERVER = ClientServerConfig(server_command=[sys.executable, "-m", "edsconv", "lsp"])
 STATE: dict = {}
 
 

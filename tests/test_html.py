@@ -87,6 +87,16 @@ def test_parameters_table_holds_every_parameter_with_its_range() -> None:
     assert 'id="e-Param2"' in page and "data-sortable" in page
 
 
+def test_parameters_table_says_what_show_says_of_an_invalid_default_and_an_open_range() -> None:
+    """Issue 18 item 32 for the page: a BOOL default of 255 was a blank cell, an open range ``0 .. ``."""
+    text = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text()
+    text = text.replace("0xC8,                   $ Data Type: UDINT", "0xC1, $ BOOL", 1)
+    text = text.replace("4,                      $ Data Size in bytes", "1,", 1)
+    text = text.replace("2000,1000000,10000,     $ min", "0,,255, $ min", 1)
+    row = re.search(r'<tr id="e-Param1">(.*?)</tr>', page_of_text(text)).group(1)
+    assert re.findall(r"<td>(.*?)</td>", row)[3:5] == ["255 (invalid)", "0 .. (no max)"]
+
+
 def test_bit_map_sizes_members_by_their_bits_and_shows_padding() -> None:
     page = page_of_text(MINIMAL.format(name="Speed"))
     drawing = re.search(r'<g id="map-Assem1">(.*?)</g>\n</svg>', page, re.S).group(1)

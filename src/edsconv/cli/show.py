@@ -18,6 +18,9 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from edsconv import analyse, cip_tables
+from edsconv.cells import parameter_value as _value
+from edsconv.cells import revision as _revision
+from edsconv.cells import value_range as _range
 from edsconv.cli.common import (
     EXIT_CLEAN,
     CannotRun,
@@ -129,26 +132,8 @@ def print_text(document: dict, sections: tuple[str, ...]) -> None:
 # --- text of values -----------------------------------------------------------------------------
 
 
-def _range(low: Any, high: Any) -> str:
-    """``low .. high``; an open end says so (``1000 .. (no max)``): a blank read as a typo."""
-    if low in (None, "") and high in (None, ""):
-        return ""
-    return f"{_text(low) or '(no min)'} .. {_text(high) or '(no max)'}"
-
-
-def _value(parameter: dict, name: str) -> str:
-    """A parameter's minimum, maximum or default, or what the file writes there marked invalid when it has
-    no reading (``255 (invalid)`` for a BOOL): show says what the file says."""
-    written = parameter.get("invalid", {}).get(name)
-    return f"{written} (invalid)" if written is not None else _text(parameter[name])
-
-
 def _joined(*parts: Any) -> str:
     return " ".join(_text(part) for part in parts if part not in (None, ""))
-
-
-def _revision(major: Any, minor: Any) -> str:
-    return "" if major is None and minor is None else f"{_text(major) or '?'}.{_text(minor) or '?'}"
 
 
 def _reference_text(ref: dict | None) -> str:

@@ -33,7 +33,8 @@ def environment() -> jinja2.Environment:
                              trim_blocks=True, lstrip_blocks=True, undefined=jinja2.StrictUndefined)
     env.filters.update(cell=text.cell, type_text=text.type_text, member_text=text.member_text,
                        endpoint_text=text.endpoint_text, path_text=text.path_text, reference_text=text.reference_text)
-    env.globals.update(value_range=text.value_range, bits_text=text.bits_text, mark=view.mark, rulers=drawing.rulers())
+    env.globals.update(value_range=text.value_range, parameter_value=text.parameter_value,
+                       bits_text=text.bits_text, mark=view.mark, rulers=drawing.rulers())
     return env
 
 

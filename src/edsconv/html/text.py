@@ -5,26 +5,9 @@ The templates escape them (Jinja2 autoescaping); these functions only choose the
 
 from __future__ import annotations
 
-from typing import Any
+from edsconv.cells import cell, parameter_value, revision, value_range
 
-
-def cell(value: Any) -> str:
-    """A value as a cell shows it: nothing for None, floats short, lists comma-separated."""
-    if value is None:
-        return ""
-    if isinstance(value, float):
-        return f"{value:g}"
-    if isinstance(value, list):
-        return ", ".join(map(cell, value))
-    return str(value)
-
-
-def value_range(low: Any, high: Any) -> str:
-    return "" if low is None and high is None else f"{cell(low)} .. {cell(high)}"
-
-
-def revision(major: Any, minor: Any) -> str:
-    return "" if major is None and minor is None else f"{cell(major) or '?'}.{cell(minor) or '?'}"
+__all__ = ["cell", "parameter_value", "revision", "value_range"]
 
 
 def type_text(parameter: dict) -> str:
@@ -98,8 +81,9 @@ def member_title(member: dict, parameter: dict | None) -> str:
         return f"{member_text(what)}, {where}"
     bit = f" bit {what['bit']}" if what.get("bit") is not None else ""
     lines = [f"{what['keyword']}{bit} {cell(parameter['name'])}, {where}",
-             f"{type_text(parameter)}; range {value_range(parameter['minimum'], parameter['maximum'])}"
-             f"; default {cell(parameter['default'])} {cell(parameter['units'])}".rstrip()]
+             f"{type_text(parameter)}; range "
+             f"{value_range(parameter_value(parameter, 'minimum'), parameter_value(parameter, 'maximum'))}"
+             f"; default {parameter_value(parameter, 'default')} {cell(parameter['units'])}".rstrip()]
     if parameter["help"]:
         lines.append(parameter["help"])
     return "\n".join(lines)

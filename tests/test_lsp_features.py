@@ -233,3 +233,15 @@ async def test_fix_all_command_asks_the_client_to_apply_the_fixes(client: Langua
     assert (edit.range.start.line, edit.range.end.line) == (17, 18)
     clean = await opened(client, "fix-all-clean")
     assert await client.workspace_execute_command_async(types.ExecuteCommandParams("edsconv.fixAll", [clean])) == 0
+
+
+async def test_convert_command_refuses_what_eds2xml_refuses(client: LanguageClient):
+    path = STATE["folder"] / "no_identity.eds"
+    text = EXAMPLE.replace("        VendCode = 65535;\n", "")  # no VendCode: the profiles would invent one (XML103)
+    path.write_text(text)
+    client.text_document_did_open(types.DidOpenTextDocumentParams(
+        types.TextDocumentItem(uri=path.as_uri(), language_id="eds", version=1, text=text)))
+    with pytest.raises(Exception, match="not converted: .*VendCode"):
+        await client.workspace_execute_command_async(types.ExecuteCommandParams(
+            "edsconv.convertToXml", [path.as_uri()]))
+    assert not (STATE["folder"] / "no_identity_device.xml").exists()

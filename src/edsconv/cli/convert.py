@@ -25,18 +25,17 @@ from edsconv.cli.common import (
     writing,
 )
 from edsconv.diagnostics import Severity
+from edsconv.eds.syntax import EdsFile
 from edsconv.model import Device
 from edsconv.xml.common import Header, InvalidProfile
 from edsconv.xml.convert import (
     WRAPPER_REFERENCES,
     NotConverted,
     Output,
-    conversion_refusals,
     device_from_profiles,
+    eds_documents,
     eds_text,
     header_for,
-    profile_documents,
-    wrapper_documents,
 )
 
 
@@ -89,10 +88,8 @@ def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: 
         overrides["date"] = overrides["date"].date()
     header = header_for(device, eds_file.stem, overrides)
     try:
-        refusals = conversion_refusals(eds, device, strict)
-        if refusals:
-            raise NotConverted(refusals)
-        outputs = _documents(eds_file, device, header, WRAPPER_REFERENCES[reference] if wrapper else None)
+        outputs = _documents(eds, eds_file, device, header, strict,
+                             WRAPPER_REFERENCES[reference] if wrapper else None)
     except NotConverted as refused:
         echo_diagnostics(refused.diagnostics, err=True)
         return EXIT_FINDINGS
@@ -101,12 +98,11 @@ def eds2xml_command(eds_file: Path, output_dir: Path, wrapper: bool, reference: 
     return exit_status(diagnostics)
 
 
-def _documents(eds_file: Path, device: Device, header: Header, wrapper_reference: str | None) -> list[Output]:
+def _documents(eds: EdsFile, eds_file: Path, device: Device, header: Header, strict: bool,
+               wrapper_reference: str | None) -> list[Output]:
     """The profiles (or, with a wrapper reference, the wrapper profiles) of ``device``, validated."""
     try:
-        if wrapper_reference is not None:
-            return wrapper_documents(device, header, eds_file.stem, wrapper_reference)
-        return profile_documents(device, header, eds_file.stem)
+        return eds_documents(eds, device, header, eds_file.stem, strict=strict, wrapper_reference=wrapper_reference)
     except InvalidProfile as error:
         raise CannotRun(f"{eds_file}: internal error, nothing written: {error}") from error
 

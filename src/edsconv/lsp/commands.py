@@ -43,20 +43,20 @@ def convert_to_xml(analysis: Analysis, path: str | None, force: bool) -> list[st
     """Write STEM_device.xml and STEM_commnet.xml beside the EDS at ``path``; the paths written."""
     from edsconv.atomic import Refused, write_all_atomically
     from edsconv.xml.common import InvalidProfile
-    from edsconv.xml.convert import NotConverted, conversion_refusals, header_for, profile_documents
+    from edsconv.xml.convert import NotConverted, eds_documents, header_for
 
     if path is None:
         raise CommandRefused("save the file first: the profiles are written beside it")
     eds_path = Path(path)
-    refusals = conversion_refusals(analysis.eds, analysis.device)
-    if refusals:
-        raise CommandRefused("not converted: " + "; ".join(d.message for d in refusals[:3]))
     try:
-        outputs = profile_documents(analysis.device, header_for(analysis.device, eds_path.stem, {}), eds_path.stem)
+        outputs = eds_documents(analysis.eds, analysis.device, header_for(analysis.device, eds_path.stem, {}),
+                                eds_path.stem)
         targets = [eds_path.parent / output.name for output in outputs]
         write_all_atomically([(t, o.data) for t, o in zip(targets, outputs, strict=True)], inputs=[eds_path],
                              force=force)
-    except (NotConverted, InvalidProfile, Refused, OSError) as error:
+    except NotConverted as refused:
+        raise CommandRefused("not converted: " + "; ".join(d.message for d in refused.diagnostics[:3])) from None
+    except (InvalidProfile, Refused, OSError) as error:
         raise CommandRefused(str(error)) from None
     return [str(target) for target in targets]
 

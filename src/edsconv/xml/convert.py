@@ -211,6 +211,18 @@ def profile_documents(device: Device, header: Header, stem: str) -> list[Output]
             readable_document(f"{stem}_commnet.xml", commnet_profile(device, header), "ethernetip-commnet", device)]
 
 
+def eds_documents(eds: EdsFile, device: Device, header: Header, stem: str, *, strict: bool = False,
+                  wrapper_reference: str | None = None) -> list[Output]:
+    """The profiles of an EDS (with ``wrapper_reference``, its wrapper profiles), validated, as eds2xml and
+    the editor's convert command write them; :class:`NotConverted` (XML103) when it must not be converted."""
+    refusals = conversion_refusals(eds, device, strict)
+    if refusals:
+        raise NotConverted(refusals)
+    if wrapper_reference is not None:
+        return wrapper_documents(device, header, stem, wrapper_reference)
+    return profile_documents(device, header, stem)
+
+
 def readable_document(name: str, root: etree._Element, kind: str, device: Device) -> Output:
     """The validated document (:func:`serialise`) when edsconv's reader reads it back, else
     :class:`NotConverted`: the writer never produces what the reader cannot read."""

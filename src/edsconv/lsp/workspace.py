@@ -1,7 +1,7 @@
 """The workspace: every EDS in the open folders, checked in the background, so that errors in
 files no editor shows reach the problems list, and their entries reach workspace symbol search.
 
-Files are found as ``edsconv lint DIR`` finds them (:func:`edsconv.lint.discover`, with the
+Files are found as ``edsconv lint DIR`` finds them (:func:`edsconv.paths.discover`, with the
 ``exclude`` of the configuration), checked one at a time in a worker thread (open documents
 keep the editor's answers first), and their diagnostics are *pushed*
 (``textDocument/publishDiagnostics``) under each file's URI: every client shows pushed
@@ -32,6 +32,7 @@ from edsconv.lsp.analysis import Analysis, analyse
 from edsconv.lsp.diagnostics import to_lsp
 from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings
+from edsconv.paths import EDS_SUFFIX, discover
 
 #: A folder with more EDS files than this is checked up to this many (the rest named in the log).
 MAX_FILES = 2000
@@ -64,13 +65,11 @@ class Checked:
 
 def eds_files(folders: Iterable[str]) -> list[str]:
     """The EDS files of the workspace folders, as ``edsconv lint`` finds them, at most :data:`MAX_FILES`."""
-    from edsconv.lint import discover
-
     existing = [folder for folder in folders if folder and os.path.isdir(folder)]
     try:
-        found = discover(existing, Resolver()) if existing else []
+        found = discover(existing, Resolver()).files if existing else []
     except ConfigError:
-        found = discover(existing) if existing else []
+        found = discover(existing).files if existing else []
     return found[:MAX_FILES]
 
 
@@ -128,7 +127,7 @@ class WorkspaceChecker:
     def closed(self, uri: str, folders: list[str]) -> None:
         """A document was closed: a file of the folders is checked again as it is on disk."""
         path = to_fs_path(uri)
-        if path and path.lower().endswith(".eds") and \
+        if path and path.lower().endswith(EDS_SUFFIX) and \
                 any(os.path.commonpath([folder, path]) == folder for folder in folders if folder):
             asyncio.ensure_future(self.check(path, changed=True))
 

@@ -4,7 +4,6 @@ symbols and diagnostics of files no editor has open, and the commands."""
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import pytest
@@ -16,7 +15,7 @@ from lsprotocol import types  # noqa: E402
 from pytest_lsp import LanguageClient  # noqa: E402
 
 from edsconv.lsp.semantic_tokens import TOKEN_MODIFIERS, TOKEN_TYPES  # noqa: E402
-from lsp_support import BROKEN, EXAMPLE, EXAMPLE_PATH, SERVER  # noqa: E402
+from lsp_support import EXAMPLE, SERVER, open_workspace  # noqa: E402
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -25,20 +24,15 @@ STATE: dict = {}
 
 @pytest_lsp.fixture(scope="module", config=SERVER)
 async def client(lsp_client: LanguageClient, tmp_path_factory: pytest.TempPathFactory):
-    folder = tmp_path_factory.mktemp("workspace")
-    shutil.copy(EXAMPLE_PATH, folder / "adapter.eds")
-    (folder / "sub").mkdir()
-    (folder / "sub" / "broken.eds").write_text(BROKEN)
-    STATE["folder"], STATE["edits"] = folder, []
+    folder = STATE["folder"] = tmp_path_factory.mktemp("workspace")
+    STATE["edits"] = []
 
     @lsp_client.feature(types.WORKSPACE_APPLY_EDIT)
     def apply_edit(params: types.ApplyWorkspaceEditParams) -> types.ApplyWorkspaceEditResult:
         STATE["edits"].append(params)
         return types.ApplyWorkspaceEditResult(applied=True)
 
-    STATE["initialize"] = await lsp_client.initialize_session(types.InitializeParams(
-        capabilities=types.ClientCapabilities(), root_uri=folder.as_uri(),
-        workspace_folders=[types.WorkspaceFolder(folder.as_uri(), "workspace")]))
+    STATE["initialize"] = await open_workspace(lsp_client, folder, "sub/broken.eds", types.ClientCapabilities())
     yield
     await lsp_client.shutdown_session()
 

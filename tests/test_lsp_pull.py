@@ -4,8 +4,6 @@ problem is shown twice; a client that does not pull gets pushes (tests/test_lsp_
 
 from __future__ import annotations
 
-import shutil
-
 import pytest
 
 pytest.importorskip("pygls")
@@ -14,7 +12,7 @@ pytest_lsp = pytest.importorskip("pytest_lsp")
 from lsprotocol import types  # noqa: E402
 from pytest_lsp import LanguageClient  # noqa: E402
 
-from lsp_support import BROKEN, EXAMPLE, EXAMPLE_PATH, SERVER  # noqa: E402
+from lsp_support import BROKEN, EXAMPLE, SERVER, open_workspace  # noqa: E402
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
 
@@ -23,17 +21,12 @@ STATE: dict = {}
 
 @pytest_lsp.fixture(scope="module", config=SERVER)
 async def client(lsp_client: LanguageClient, tmp_path_factory: pytest.TempPathFactory):
-    folder = tmp_path_factory.mktemp("pulled")
-    shutil.copy(EXAMPLE_PATH, folder / "adapter.eds")
-    (folder / "broken.eds").write_text(BROKEN)
-    STATE["folder"] = folder
+    folder = STATE["folder"] = tmp_path_factory.mktemp("pulled")
     capabilities = types.ClientCapabilities(
         text_document=types.TextDocumentClientCapabilities(diagnostic=types.DiagnosticClientCapabilities()),
         workspace=types.WorkspaceClientCapabilities(diagnostics=types.DiagnosticWorkspaceClientCapabilities(
             refresh_support=True)))
-    STATE["initialize"] = await lsp_client.initialize_session(types.InitializeParams(
-        capabilities=capabilities, root_uri=folder.as_uri(),
-        workspace_folders=[types.WorkspaceFolder(folder.as_uri(), "pulled")]))
+    STATE["initialize"] = await open_workspace(lsp_client, folder, "broken.eds", capabilities)
     yield
     await lsp_client.shutdown_session()
 

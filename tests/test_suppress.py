@@ -99,3 +99,18 @@ def test_an_unknown_or_bracketless_directive_is_eds099_malformed():
         assert found[-1].message.startswith(f"malformed edsconv comment '{comment[2:]}': the directives are")
     # a comment that merely mentions edsconv is no directive
     assert codes(FAULTY.replace("MajRev = 1;", "MajRev = 1;   $ checked by edsconv: 0.2")) == ["EDS114", "EDS103"]
+
+
+def test_a_text_that_never_says_edsconv_is_not_walked_for_directives():
+    """The fast path: no comment can hold a directive, so no entry's fields are made to look for one
+    (the language server's largest per-keystroke cost on a large file); one mention anywhere walks them."""
+    from edsconv.suppress import apply_suppressions
+
+    def unread_after(text: str) -> int:
+        eds = parse(text, "x.eds")
+        apply_suppressions(eds, [], lambda code: True)
+        return sum(not entry.is_read for section in eds.sections for entry in section.entries)
+
+    silent = GOOD.replace("edsconv", "an")  # the example names edsconv in a comment and two strings
+    assert unread_after(silent) > 0
+    assert unread_after(silent + "$ EDSCONV was here\n") == 0

@@ -15,6 +15,7 @@ navigation read), then the diagnostics.
 from __future__ import annotations
 
 import asyncio
+import gc
 import re
 import traceback
 from collections.abc import Callable
@@ -26,6 +27,11 @@ from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import EdsFile, Entry
 from edsconv.model import Device
 from edsconv.model.references import Occurrence, definitions, occurrences
+
+#: Seconds without an analysis after which the garbage of the earlier ones is collected (see :class:`Analyses`)
+IDLE_COLLECTION = 1.0
+#: Every this many collections in a pause, a full one (the older generations too)
+FULL_COLLECTION_EVERY = 10
 
 #: A line and its line end: LSP breaks lines at \r\n, \r and \n only (as the EDS reader does).
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")
@@ -133,12 +139,30 @@ class _Run:
 
 
 class Analyses:
-    """The latest analysis of each document, by URI."""
+    """The latest analysis of each document, by URI.
+
+    The server runs with the cyclic garbage collector off (:func:`edsconv.lsp.server.create_server`):
+    an analysis is hundreds of thousands of small objects, and the first collection after one (a
+    scan of all of them) fell on the next keystroke's path. Its garbage is collected here instead,
+    once no analysis has run for :data:`IDLE_COLLECTION` seconds, a pause in typing.
+    """
 
     def __init__(self) -> None:
         self._latest: dict[str, _Run] = {}
         #: one analysis at a time: two would share the interpreter and both be late
         self._worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="edsconv-analysis")
+        self._collection: asyncio.TimerHandle | None = None
+        self.collections = 0
+
+    def _collect_when_idle(self, loop: asyncio.AbstractEventLoop) -> None:
+        if self._collection is not None:
+            self._collection.cancel()
+        self._collection = loop.call_later(IDLE_COLLECTION, self._collect)
+
+    def _collect(self) -> None:
+        self._collection = None
+        self.collections += 1
+        gc.collect(2 if self.collections % FULL_COLLECTION_EVERY == 0 else 1)
 
     def of(self, uri: str, text: str, version: int | None, path: str | None) -> asyncio.Future[Analysis]:
         """The whole analysis of this text (diagnostics included); it fails with :class:`Superseded`
@@ -157,6 +181,8 @@ class Analyses:
         if known is not None:
             known.superseded = True
         loop = asyncio.get_running_loop()
+        if self._collection is not None:
+            self._collection.cancel()  # not while this one runs: it is collected in the pause after it
         run = _Run(text, loop.create_future(), loop.create_future())
         self._latest[uri] = run
 
@@ -175,9 +201,11 @@ class Analyses:
             except BaseException as error:  # noqa: BLE001 - handed to whoever waits for this text
                 for future in (run.readable, run.checked):
                     loop.call_soon_threadsafe(settle, future, None, error)
+                loop.call_soon_threadsafe(self._collect_when_idle, loop)
                 return
             for future in (run.readable, run.checked):
                 loop.call_soon_threadsafe(settle, future, analysis, None)
+            loop.call_soon_threadsafe(self._collect_when_idle, loop)
 
         self._worker.submit(work)
         for future in (run.readable, run.checked):  # nobody may be waiting for a superseded text's analysis

@@ -13,6 +13,7 @@ and leaves the shared analysis running for the others.
 from __future__ import annotations
 
 import asyncio
+import gc
 import sys
 from importlib import metadata
 
@@ -125,6 +126,7 @@ def create_server(show_renderer: ShowRenderer | None = None) -> EdsLanguageServe
     # does in a thread of its own: hand the lock over every 0.5 ms instead of 5 ms, so that the messages
     # a long analysis (which they may supersede) is running beside come in when sent.
     sys.setswitchinterval(0.0005)
+    gc.disable()  # the analyses collect their garbage in the pauses of typing (lsp.analysis.Analyses)
     server = EdsLanguageServer(show_renderer)
     _register_documents(server)
     _register_reading(server)

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import edsconv
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import EdsFile, Entry
+from edsconv.lsp.incremental import Carried, reuse_entries
 from edsconv.model import Device
 from edsconv.model.references import Occurrence, definitions, occurrences
 
@@ -72,11 +73,13 @@ def _never() -> bool:
 
 def analyse(text: str, version: int | None = None, path: str | None = None, *,
             superseded: Callable[[], bool] = _never,
-            readable: Callable[[Analysis], object] | None = None) -> Analysis:
+            readable: Callable[[Analysis], object] | None = None, carried: Carried | None = None) -> Analysis:
     """Read and check ``text``; a failure of edsconv itself becomes an EDS000 diagnostic, never an exception.
 
     ``superseded`` is asked between the steps: when it says so, :class:`Superseded` is raised.
     ``readable`` is handed the analysis once its models and references are made, before the checks run.
+    ``carried`` is what the analysis of the document's last text left (:mod:`edsconv.lsp.incremental`):
+    what the edit did not change is taken from it, and it is left for the next one.
     """
     from edsconv.checks import Context, load_checks
     from edsconv.eds.reader import paused_gc
@@ -92,10 +95,17 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
     step()
     with paused_gc():
         try:
-            device = build(eds)
+            memo = None
+            if carried is not None:
+                reuse_entries(carried, text, len(lines), eds)
+                memo = carried.memo
+                memo.start()
+            device = build(eds, memo)
             step()
-            analysis = Analysis(version, text, lines, eds, device, [], occurrences(eds, device, lines),
+            analysis = Analysis(version, text, lines, eds, device, [], occurrences(eds, device, lines, memo),
                                 definitions(device))
+            if memo is not None:
+                memo.finish()
             if readable is not None:
                 readable(analysis)
             diagnostics = [*eds.diagnostics, *device.diagnostics]
@@ -149,6 +159,8 @@ class Analyses:
 
     def __init__(self) -> None:
         self._latest: dict[str, _Run] = {}
+        #: what the analyses of each open document hand from one text to the next
+        self._carried: dict[str, Carried] = {}
         #: one analysis at a time: two would share the interpreter and both be late
         self._worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="edsconv-analysis")
         self._collection: asyncio.TimerHandle | None = None
@@ -185,6 +197,7 @@ class Analyses:
             self._collection.cancel()  # not while this one runs: it is collected in the pause after it
         run = _Run(text, loop.create_future(), loop.create_future())
         self._latest[uri] = run
+        carried = self._carried.setdefault(uri, Carried())
 
         def settle(future: asyncio.Future[Analysis], analysis: Analysis | None, error: BaseException | None) -> None:
             if future.done():
@@ -196,7 +209,7 @@ class Analyses:
 
         def work() -> None:
             try:
-                analysis = analyse(text, version, path, superseded=lambda: run.superseded,
+                analysis = analyse(text, version, path, superseded=lambda: run.superseded, carried=carried,
                                    readable=lambda a: loop.call_soon_threadsafe(settle, run.readable, a, None))
             except BaseException as error:  # noqa: BLE001 - handed to whoever waits for this text
                 for future in (run.readable, run.checked):
@@ -212,8 +225,11 @@ class Analyses:
             future.add_done_callback(lambda f: f.cancelled() or f.exception())
         return run
 
-    def forget(self, uri: str) -> None:
-        """The document changed or closed: the analysis of its old text stops at its next step."""
+    def forget(self, uri: str, closed: bool = False) -> None:
+        """The document changed or closed: the analysis of its old text stops at its next step; what
+        its analyses handed on is dropped when it closed."""
         known = self._latest.pop(uri, None)
         if known is not None:
             known.superseded = True
+        if closed:
+            self._carried.pop(uri, None)

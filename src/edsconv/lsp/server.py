@@ -160,7 +160,7 @@ def _register_documents(server: EdsLanguageServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: EdsLanguageServer, params: types.DidCloseTextDocumentParams) -> None:
         ls.publisher.clear(params.text_document.uri)
-        ls.analyses.forget(params.text_document.uri)
+        ls.analyses.forget(params.text_document.uri, closed=True)
         ls.workspace_checker.closed(params.text_document.uri, ls.folders())
 
 

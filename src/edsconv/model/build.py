@@ -44,6 +44,7 @@ from edsconv.model import (
 )
 from edsconv.model.cip_build import attach
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
+from edsconv.model.memo import MISSING, EntryMemo
 from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
 
 OBSOLETE_DATA_TYPE = rule(
@@ -173,14 +174,49 @@ def _documentation_null(entry: Entry, field: Field) -> bool:
     return entry.keyword.startswith("Proxied") and isinstance(value, String) and value.parts in (('""',),)
 
 
+@dataclass(slots=True)
+class _Made:
+    """A record made from one entry, and what making it reported."""
+
+    record: Any
+    diagnostics: list[Diagnostic]
+    unreadable: list[Unreadable]
+    erroneous: list[tuple[tuple[str, str, int], str]]
+
+
 class _Builder:
-    def __init__(self, eds: EdsFile) -> None:
+    def __init__(self, eds: EdsFile, memo: EntryMemo | None = None) -> None:
         self.eds = eds
         self.device = Device(eds=eds)
         self.diagnostics = self.device.diagnostics
         self.enums: list[tuple[str, Entry]] = []
         self.size_adders: list[Entry] = []
         self.section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
+        self.memo = memo
+        #: the erroneous values of the record being made for the memo
+        self.erroneous_made: list[tuple[tuple[str, str, int], str]] | None = None
+
+    def record(self, entry: Entry, make: Callable[[], Any]) -> Any:
+        """``make()``, or the record the memo holds for this entry with what making it reported."""
+        if self.memo is None:
+            return make()
+        section = self.section_of[id(entry)]
+        made = self.memo.get("record", entry, section)
+        if made is MISSING:
+            diagnostics, unreadable = len(self.diagnostics), len(self.device.unreadable)
+            self.erroneous_made = []
+            record = make()
+            made = _Made(record, self.diagnostics[diagnostics:], self.device.unreadable[unreadable:],
+                         self.erroneous_made)
+            self.erroneous_made = None
+            self.memo.put("record", entry, section, made)
+        else:
+            self.diagnostics += made.diagnostics
+            self.device.unreadable += made.unreadable
+            self.device.erroneous.update(made.erroneous)
+            if isinstance(made.record, Parameter):  # set by attach_enums_and_adders, from other entries
+                made.record.enum = made.record.size_adder = None
+        return made.record
 
     # --- diagnostics and field conversion --------------------------------------------
     def report(self, rule_, message: str, node, clause: str = "") -> None:
@@ -214,7 +250,10 @@ class _Builder:
                                                          spelling(field.value) if field.value is not None else ""))
                 return None
             if problem.rule.severity is Severity.ERROR:
-                self.device.erroneous[(self.section_of[id(entry)], entry.keyword, index)] = problem.rule.code
+                key = (self.section_of[id(entry)], entry.keyword, index)
+                self.device.erroneous[key] = problem.rule.code
+                if self.erroneous_made is not None:
+                    self.erroneous_made.append((key, problem.rule.code))
             return problem.value
 
     def convert(self, value: Value, type_name: str, proxy: bool, entry: Entry, index: int) -> Any:
@@ -259,7 +298,7 @@ class _Builder:
         handlers = {
             "File": self.single_entry, "Device": self.single_entry, "Device Classification": self.classification,
             "ParamClass": self.single_entry, "Params": self.params_entry, "Groups": self.group,
-            "Assembly": self.assembly_entry, "Connection Manager": self.connection, "Port": self.port,
+            "Assembly": self.assembly_entry, "Connection Manager": self.connection_entry, "Port": self.port,
             "Modular": self.modular_entry,
         }
         for section in self.eds.sections:
@@ -294,23 +333,20 @@ class _Builder:
 
     def collect_comments(self) -> None:
         notes = self.device.comments
+        memo = self.memo
         for section in self.eds.sections:
-            notes.extend(CommentNote(section.name, None, None, c.text, True) for c in section.leading_comments)
-            notes.extend(CommentNote(section.name, None, None, c.text) for c in section.comments)
+            name = section.name
+            notes.extend(CommentNote(name, None, None, c.text, True) for c in section.leading_comments)
+            notes.extend(CommentNote(name, None, None, c.text) for c in section.comments)
             for entry in section.entries:
-                keyword = entry.keyword
-                notes.extend(CommentNote(section.name, keyword, None, c.text, True) for c in entry.leading_comments)
-                notes.extend(CommentNote(section.name, keyword, None, c.text) for c in entry.comments)
-                fields = entry.fields
-                # most entries have neither comments nor groups: tell them in C, without a loop in Python
-                if not any(map(_HAS_COMMENTS, fields)) and Group not in map(type, map(_VALUE_OF, fields)):
+                if memo is None:
+                    notes += _entry_notes(name, entry)
                     continue
-                for index, item in enumerate(fields):
-                    if item.has_comments:
-                        notes.extend(CommentNote(section.name, keyword, index, c.text) for c in item.comments)
-                    if item.value.__class__ is Group:  # comments inside a group go with the group's field
-                        notes.extend(CommentNote(section.name, keyword, index, c.text)
-                                     for inner in Entry("", item.value.fields).walk_fields() for c in inner.comments)
+                made = memo.get("comments", entry, name)
+                if made is MISSING:
+                    made = _entry_notes(name, entry)
+                    memo.put("comments", entry, name, made)
+                notes += made
 
     def collect_unparsed(self) -> None:
         """The statements the reader could not parse (:class:`Unreadable`, kept as written)."""
@@ -351,7 +387,7 @@ class _Builder:
         elif spec.keyword == "ProxyParamSizeAdder":
             self.size_adders.append(entry)
         elif entry.keyword not in self.device.parameters:
-            self.device.parameters[entry.keyword] = self.parameter(entry, spec)
+            self.device.parameters[entry.keyword] = self.record(entry, lambda: self.parameter(entry, spec))
 
     def parameter(self, entry: Entry, spec: tables.EntrySpec) -> Parameter:
         proxy = spec.keyword == "ProxyParam"
@@ -427,7 +463,7 @@ class _Builder:
         if spec.keyword == "Revision":
             self.device.assembly_revision = self.single(entry, spec)
         elif entry.keyword not in self.device.assemblies:
-            self.device.assemblies[entry.keyword] = self.assembly(entry, spec)
+            self.device.assemblies[entry.keyword] = self.record(entry, lambda: self.assembly(entry, spec))
 
     def assembly(self, entry: Entry, spec: tables.EntrySpec) -> Assembly:
         proxy = spec.keyword == "ProxyAssem"
@@ -460,12 +496,14 @@ class _Builder:
         return assembly
 
     # --- [Connection Manager] -------------------------------------------------------------
-    def connection(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        if entry.keyword in self.device.connections:
-            return
+    def connection_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        if entry.keyword not in self.device.connections:
+            self.device.connections[entry.keyword] = self.record(entry, lambda: self.connection(entry, spec))
+
+    def connection(self, entry: Entry, spec: tables.EntrySpec) -> Connection:
         v = self.fields(entry, spec, proxy=spec.keyword == "ProxyConnect")
         v += [None] * (len(tables.CONNECTION_FIELDS) - len(v))
-        self.device.connections[entry.keyword] = Connection(
+        return Connection(
             entry.keyword, spec.keyword, tables.instance_number(entry.keyword),
             trigger_transport=v[0], parameters=v[1],
             o_to_t=ConnectionEndpoint(*v[2:5]), t_to_o=ConnectionEndpoint(*v[5:8]),
@@ -500,6 +538,24 @@ _HAS_COMMENTS = operator.attrgetter("has_comments")
 _VALUE_OF = operator.attrgetter("value")
 
 
+def _entry_notes(section: str, entry: Entry) -> list[CommentNote]:
+    """The comments of an entry and of its fields, as notes."""
+    keyword = entry.keyword
+    notes = [CommentNote(section, keyword, None, c.text, True) for c in entry.leading_comments]
+    notes += [CommentNote(section, keyword, None, c.text) for c in entry.comments]
+    fields = entry.fields
+    # most entries have neither comments nor groups: tell them in C, without a loop in Python
+    if not any(map(_HAS_COMMENTS, fields)) and Group not in map(type, map(_VALUE_OF, fields)):
+        return notes
+    for index, item in enumerate(fields):
+        if item.has_comments:
+            notes += [CommentNote(section, keyword, index, c.text) for c in item.comments]
+        if item.value.__class__ is Group:  # comments inside a group go with the group's field
+            notes += [CommentNote(section, keyword, index, c.text)
+                      for inner in Entry("", item.value.fields).walk_fields() for c in inner.comments]
+    return notes
+
+
 def iter_references(device: Device) -> Iterator[Reference]:
     """Every reference of the model: group members, assembly members, connection
     RPI/size/format fields, the chassis SlotDisplayRule."""
@@ -525,6 +581,12 @@ def spelling(value: Value) -> str:
     return value.raw
 
 
-def build(eds: EdsFile) -> Device:
-    """The semantic model of a parsed EDS; conversion problems are in ``device.diagnostics``."""
-    return _Builder(eds).build()
+def build(eds: EdsFile, memo: EntryMemo | None = None) -> Device:
+    """The semantic model of a parsed EDS; conversion problems are in ``device.diagnostics``.
+
+    With a ``memo``, the parameters, assemblies and connections made from entries it knows are
+    taken from it (:mod:`edsconv.model.memo`). A record depends on its entry's text and section
+    only: what other entries decide (a parameter's enum and size adder, the targets of
+    references) is set anew.
+    """
+    return _Builder(eds, memo).build()

@@ -22,6 +22,7 @@ from edsconv import spec_tables as tables
 from edsconv.eds.syntax import EdsFile, Entry, String
 from edsconv.model import Device, Reference
 from edsconv.model.build import iter_references
+from edsconv.model.memo import MISSING, EntryMemo
 
 #: A parameter substitution inside a path string, bracketed or not (C.4.1.4.9.13).
 # a path reference standing alone: not part of a longer word
@@ -67,20 +68,50 @@ def definitions(device: Device) -> dict[str, Entry]:
     return found
 
 
-def occurrences(eds: EdsFile, device: Device, lines: Sequence[str]) -> list[Occurrence]:
-    """Every span naming an entry, definitions included, in no particular order.
+def occurrences(eds: EdsFile, device: Device, lines: Sequence[str], memo: EntryMemo | None = None) -> list[Occurrence]:
+    """Every span naming an entry, definitions included, entry by entry.
 
     ``lines`` are the lines of the text ``eds`` was read from (line ends may stay
-    on them); they locate substitutions inside multi-part path strings.
+    on them); they locate substitutions inside multi-part path strings. With a
+    ``memo`` (:mod:`edsconv.model.memo`), the spans of an entry it knows are taken
+    from it when the entry still defines what it defined and holds as many references.
     """
-    found = [_keyword_span(entry, keyword, "definition") for keyword, entry in definitions(device).items()]
-    found += _paired_entries(eds)
-    section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
-    found += [_reference_span(reference, entry, section_of.get(id(entry), ""))
-              for reference in iter_references(device)
-              if (entry := reference.entry) is not None and reference.field_index < len(entry.fields)]
-    found += _path_references(eds, lines)
+    defined = {id(entry): keyword for keyword, entry in definitions(device).items()}
+    references: dict[int, list[Reference]] = {}
+    for reference in iter_references(device):
+        if reference.entry is not None:
+            references.setdefault(id(reference.entry), []).append(reference)
+    found: list[Occurrence] = []
+    for section in eds.sections:
+        for entry in section.entries:
+            target, written = defined.get(id(entry)), references.get(id(entry), ())
+            if memo is None:
+                found += _entry_spans(section.name, entry, target, written, lines)
+                continue
+            context = (section.name, target, len(written))
+            spans = memo.get("spans", entry, context)
+            if spans is MISSING:
+                spans = _entry_spans(section.name, entry, target, written, lines)
+                memo.put("spans", entry, context, spans)
+            found += spans
     return found
+
+
+def _entry_spans(section: str, entry: Entry, target: str | None, written: Sequence[Reference],
+                 lines: Sequence[str]) -> list[Occurrence]:
+    """The spans of one entry: its keyword where it is a definition or paired with one, the
+    references the model read from it, and those inside its path strings."""
+    spans = [] if target is None else [_keyword_span(entry, target, "definition")]
+    spec = tables.entry_spec(section, entry.keyword)
+    if spec is not None and spec.pairs_with:
+        spans.append(_keyword_span(entry, f"{spec.pairs_with}{tables.split_numbered(entry.keyword)[1]}",
+                                   "paired entry"))
+    fields = entry.fields
+    spans += [_reference_span(reference, entry, section) for reference in written
+              if reference.field_index < len(fields)]
+    if spec is not None:
+        spans += _path_references(spec, entry, lines)
+    return spans
 
 
 def references_to(target: str, spans: Sequence[Occurrence]) -> list[Occurrence]:
@@ -99,15 +130,6 @@ def _keyword_span(entry: Entry, target: str, kind: str) -> Occurrence:
                       entry.keyword)
 
 
-def _paired_entries(eds: EdsFile) -> Iterator[Occurrence]:
-    for section in eds.sections:
-        for entry in section.entries:
-            spec = tables.entry_spec(section.name, entry.keyword)
-            if spec is not None and spec.pairs_with:
-                number = tables.split_numbered(entry.keyword)[1]
-                yield _keyword_span(entry, f"{spec.pairs_with}{number}", "paired entry")
-
-
 _KIND_BY_SECTION = {"Groups": "group member", "Assembly": "assembly member", "Connection Manager": "connection",
                     "Modular": "slot display rule"}
 
@@ -122,24 +144,20 @@ def _reference_span(reference: Reference, entry: Entry, section: str) -> Occurre
                       _KIND_BY_SECTION.get(section, "reference"), entry.keyword)
 
 
-def _path_references(eds: EdsFile, lines: Sequence[str]) -> Iterator[Occurrence]:
-    """``[ParamN]`` and ``ParamN`` inside the path strings of every entry whose field is an EPATH."""
-    for section in eds.sections:
-        for entry in section.entries:
-            strings = [(i, item, item.value) for i, item in enumerate(entry.fields)
-                       if isinstance(item.value, String) and "Param" in item.value.raw]
-            spec = tables.entry_spec(section.name, entry.keyword) if strings else None
-            if spec is None:
-                continue
-            for index, item, value in strings:
-                field_spec = spec.field_at(index + 1)
-                if field_spec is None or "EPATH" not in field_spec.alternatives or not isinstance(value, String):
-                    continue
-                for line, column, part in _string_parts(value, item.line, item.column, lines):
-                    for match in _PATH_REFERENCE.finditer(part):
-                        family = tables.split_numbered(match.group())[0]
-                        yield Occurrence(match.group(), line, column + match.start(),
-                                         column + match.end(), family, "path", entry.keyword)
+def _path_references(spec: tables.EntrySpec, entry: Entry, lines: Sequence[str]) -> Iterator[Occurrence]:
+    """``[ParamN]`` and ``ParamN`` inside the entry's path strings (fields whose type is an EPATH)."""
+    for index, item in enumerate(entry.fields):
+        value = item.value
+        if not isinstance(value, String) or "Param" not in value.raw:
+            continue
+        field_spec = spec.field_at(index + 1)
+        if field_spec is None or "EPATH" not in field_spec.alternatives:
+            continue
+        for line, column, part in _string_parts(value, item.line, item.column, lines):
+            for match in _PATH_REFERENCE.finditer(part):
+                family = tables.split_numbered(match.group())[0]
+                yield Occurrence(match.group(), line, column + match.start(),
+                                 column + match.end(), family, "path", entry.keyword)
 
 
 def _string_parts(value: String, line: int, column: int, lines: Sequence[str]) -> Iterator[tuple[int, int, str]]:

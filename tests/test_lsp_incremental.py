@@ -1,0 +1,133 @@
+"""The language server's incremental analysis (edsconv.lsp.incremental): after any edit, what it
+answers is what a fresh analysis of the new text answers, and an edit inside a line re-reads
+only the entry it touched."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from conftest import REPO, SHARED_REAL
+from edsconv.lsp.analysis import Analysis, analyse
+from edsconv.lsp.incremental import FULL_READ_EVERY, Carried, changed_lines
+
+EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text(encoding="ascii")
+#: what an edit may type or delete: the characters that change how an EDS reads
+TYPED = list(';,"$[]{}=0123456789xAZaz -.\\\t')
+
+
+def answers(analysis: Analysis) -> tuple:
+    """Everything an analysis answers with: diagnostics, the places naming entries, the model."""
+    return ([(d.code, d.severity, d.line, d.column, d.end_line, d.end_column, d.message) for d in analysis.diagnostics],
+            sorted((s.target, s.line, s.column, s.end_column, s.kind, s.entry) for s in analysis.spans),
+            {keyword: (entry.line, entry.column) for keyword, entry in analysis.definitions.items()},
+            analysis.device, analysis.device.comments, analysis.device.unreadable, analysis.device.erroneous)
+
+
+def edited(text: str, rng: random.Random, *, inside_a_line: bool = True) -> str:
+    """``text`` with one character typed, replaced or deleted somewhere (a line break too, unless
+    ``inside_a_line``)."""
+    position = rng.randrange(len(text))
+    typed = rng.choice(TYPED if inside_a_line else [*TYPED, "\n"])
+    if inside_a_line:
+        while text[position] in "\r\n":
+            position = rng.randrange(len(text))
+    kind = rng.choice("itd")
+    if kind == "i":
+        return text[:position] + typed + text[position:]
+    return text[:position] + (typed if kind == "t" else "") + text[position + 1:]
+
+
+def assert_incremental_is_exact(text: str, seed: int, edits: int, *, inside_a_line: bool = True) -> Carried:
+    carried = Carried()
+    analyse(text, carried=carried)
+    rng = random.Random(seed)
+    for _ in range(edits):
+        text = edited(text, rng, inside_a_line=inside_a_line)
+        assert answers(analyse(text, carried=carried)) == answers(analyse(text)), text
+    return carried
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_random_edits_of_the_example_answer_as_a_fresh_analysis(seed):
+    assert_incremental_is_exact(EXAMPLE, seed, 40)
+
+
+def test_edits_that_add_and_remove_lines_answer_as_a_fresh_analysis():
+    assert_incremental_is_exact(EXAMPLE, 11, 60, inside_a_line=False)
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.tuples(st.integers(0, len(EXAMPLE)), st.sampled_from(TYPED), st.sampled_from("itd")),
+                min_size=1, max_size=6))
+def test_any_sequence_of_edits_inside_lines_answers_as_a_fresh_analysis(edits):
+    carried = Carried()
+    text = EXAMPLE
+    analyse(text, carried=carried)
+    for position, typed, kind in edits:
+        position = min(position, len(text) - 1)
+        if text[position] in "\r\n":
+            continue
+        cut = position + (kind != "i")
+        text = text[:position] + ("" if kind == "d" else typed) + text[cut:]
+        assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+
+
+def largest_real_file() -> str:
+    if not SHARED_REAL.is_dir():
+        pytest.skip("the real corpus (../shared) is not beside the repository")
+    path = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
+    return path.read_text(encoding="latin-1")
+
+
+def test_random_edits_of_the_largest_real_file_answer_as_a_fresh_analysis():
+    assert_incremental_is_exact(largest_real_file(), 5, 12)
+
+
+def test_a_keystroke_inside_a_value_reads_only_its_entry_and_builds_only_its_record():
+    text = largest_real_file()
+    carried = Carried()
+    analyse(text, carried=carried)
+    offset = text.index("Param1 ")
+    offset = text.index(",", offset) - 1  # the last character of Param1's first field
+    changed = text[:offset] + ("7" if text[offset] != "7" else "8") + text[offset + 1:]
+    hits, misses = carried.memo.hits, carried.memo.misses
+    analyse(changed, carried=carried)
+    assert carried.read == 1 and carried.reused > 500
+    # Param1's record, comments and spans are made anew (3 misses); everything else is found
+    assert carried.memo.misses - misses == 3 and carried.memo.hits - hits > 1000
+
+
+def test_a_new_line_and_every_sixteenth_edit_read_the_whole_text_again():
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    analyse(EXAMPLE.replace("ProdCode = 1001;", "ProdCode = 1001;\n"), carried=carried)
+    assert carried.reused == 0
+    text = EXAMPLE
+    analyse(text, carried=carried)  # a line fewer: read whole again
+    assert carried.reused == 0
+    for step in range(FULL_READ_EVERY + 1):
+        text = text.replace("MajRev = 1;", "MajRev = 1; ") if step % 2 else text.replace("MajRev = 1; ", "MajRev = 1;")
+        analyse(text, carried=carried)
+        assert (carried.reused == 0) == (step == FULL_READ_EVERY), step
+
+
+@pytest.mark.parametrize(("old", "new", "expected"), [
+    ("a\nbc\nd\n", "a\nbXc\nd\n", (2, 6, 1)),  # the whole second line, past its break
+    ("a\nbc\nd", "a\nbc\nd!", (5, 7, 1)),  # the last line, to the end
+    ("ab\ncd\n", "ab\ncd\n", (6, 6, 0)),  # nothing changed
+    ("a\r\nbc\r\n", "a\r\nc\r\n", (3, 6, -1)),  # CR LF lines
+])
+def test_changed_lines(old, new, expected):
+    assert changed_lines(old, new) == expected
+
+
+def test_changed_lines_past_the_first_compared_chunk():
+    line = "Param1 = 0,,,0x0000,0xC7,2,\"x\",\"\",\"\",0,100,0;\n"
+    old = line * 5000  # 240 KB: several chunks
+    at = len(line) * 3000 + 5
+    new = old[:at] + "9" + old[at + 1:]
+    assert changed_lines(old, new) == (len(line) * 3000, len(line) * 3001, 0)

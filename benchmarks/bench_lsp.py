@@ -9,9 +9,12 @@ After a keystroke: the largest real file and a generated dense file
 one character of a value is changed, N times; the time runs from the didChange
 notification to the publishDiagnostics that answers it, the pause the server
 waits for typing to settle (CHANGE_DELAY) included. Hover and completion right
-after a change are timed from the didChange to the answer. Beside them, the
-time of one full re-check of the file in this process (``analyse``, warm), which
-is what the server did per change before. Hover and definition: on every real
+after a change are timed from the didChange to the answer. "new line": the
+diagnostics after a blank line is typed at the top or deleted, an edit that moves
+every line, which the server analyses from scratch (edsconv.lsp.incremental).
+Beside them, the time of one full re-check of the file in this process
+(``analyse``, warm, without what an earlier analysis left), which is what the
+server did per change before. Hover and definition: on every real
 file, N requests on each of up to 20 references (analysis already done).
 Targets (issue 21): diagnostics <= 150 ms after a keystroke on the largest real
 file, <= 1 s on a 3 MB dense file; hover and completion <= 50 ms after an edit.
@@ -89,6 +92,16 @@ def one_character_change(uri: str, text: str, version: int) -> types.DidChangeTe
                                              [types.TextDocumentContentChangePartial(range=where, text=digit)])
 
 
+def line_break_change(uri: str, version: int) -> types.DidChangeTextDocumentParams:
+    """A blank line typed at the top of the file, then deleted, by turns: an edit that moves every
+    line, which the server analyses from scratch (edsconv.lsp.incremental)."""
+    at = types.Position(0, 0)
+    where = types.Range(at, types.Position(1, 0) if version % 2 else at)
+    return types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version=version, uri=uri),
+                                             [types.TextDocumentContentChangePartial(range=where,
+                                                                                    text="" if version % 2 else "\n")])
+
+
 async def change_latency(client: Client, path: Path, repeat: int) -> dict:
     uri, text, opened = await open_file(client, path)
     document = types.TextDocumentIdentifier(uri)
@@ -110,12 +123,20 @@ async def change_latency(client: Client, path: Path, repeat: int) -> dict:
         await client.text_document_completion_async(types.CompletionParams(document, position))
         completions.append(time.perf_counter() - start)
         await client.next_diagnostics(uri)
+    line_breaks = []
+    first = 2 + 3 * repeat
+    for line_version in range(first, first + 2 * repeat):
+        start = time.perf_counter()
+        client.text_document_did_change(line_break_change(uri, line_version))
+        await client.next_diagnostics(uri)
+        line_breaks.append(time.perf_counter() - start)
     client.text_document_did_close(types.DidCloseTextDocumentParams(document))
     full, _ = best_of(repeat, analyse, text)
     return {"file": path.name, "bytes": path.stat().st_size, "open_to_diagnostics_s": opened,
             "change_to_diagnostics_s": statistics.median(changes), "change_to_diagnostics_max_s": max(changes),
             "hover_after_change_s": statistics.median(hovers),
-            "completion_after_change_s": statistics.median(completions), "full_recheck_s": full}
+            "completion_after_change_s": statistics.median(completions),
+            "line_break_to_diagnostics_s": statistics.median(line_breaks), "full_recheck_s": full}
 
 
 async def request_latency(client: Client, files: list[Path], repeat: int) -> dict:
@@ -170,12 +191,13 @@ def main() -> None:
     print(f"after a one-character change (median of {arguments.repeat}; the {CHANGE_DELAY * 1000:.0f} ms pause "
           "included), beside one full re-check")
     print(f"  {'file':<34} {'bytes':>10} {'diagnostics':>12} {'(max)':>7} {'hover':>7} {'completion':>11} "
-          f"{'full re-check':>14}")
+          f"{'new line':>9} {'full re-check':>14}")
     for change in result["change"]:
         ms = {key: f"{value * 1000:.0f} ms" for key, value in change.items() if key.endswith("_s")}
         print(f"  {change['file'][-34:]:<34} {change['bytes']:>10,} {ms['change_to_diagnostics_s']:>12} "
               f"{ms['change_to_diagnostics_max_s']:>7} {ms['hover_after_change_s']:>7} "
-              f"{ms['completion_after_change_s']:>11} {ms['full_recheck_s']:>14}")
+              f"{ms['completion_after_change_s']:>11} {ms['line_break_to_diagnostics_s']:>9} "
+              f"{ms['full_recheck_s']:>14}")
     if requests is None:
         return
     print(f"{requests['requests']} references on {requests['files']} files (best of {arguments.repeat} each)")

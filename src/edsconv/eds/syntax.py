@@ -312,6 +312,12 @@ class Entry(Located):
     def leading_comments(self, comments: list[Comment]) -> None:
         self._leading_comments = comments
 
+    @property
+    def lead_offset(self) -> int:
+        """Where its first leading comment starts (they are kept in file order), else where it starts."""
+        comments = self._leading_comments
+        return comments[0].offset if comments else self.offset
+
     def attach_trailing_comment(self, comment: Comment) -> None:
         """The reader's, while the fields are not made: a comment after the ``;`` on the same line."""
         assert self._fields is None, "only the reader attaches, before anything reads the fields"

@@ -32,16 +32,10 @@ _CHUNK = 1 << 16
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 
 
-@dataclass(slots=True)
-class Place:
-    """Where an entry stands in the text of the analysis that holds it (its own offsets may be those
-    of an older text it was first read from)."""
-
-    entry: Entry
-    #: just after the entry's ``;``
-    end: int
-    #: where its first leading comment starts, else the entry's own start
-    lead: int
+#: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
+#: older text it was first read from): the entry, just after its ``;``, and where its first leading
+#: comment starts (else where it starts)
+Place = tuple[Entry, int, int]
 
 
 @dataclass(slots=True)
@@ -63,42 +57,32 @@ class Carried:
 
 def reuse_entries(carried: Carried, text: str, line_count: int, eds: EdsFile) -> None:
     """Put the last analysis's entry objects into ``eds`` (just read from ``text``) wherever the edit
-    left an entry as it was; then make ``carried`` describe ``text``."""
-    region = None
-    if carried.line_count == line_count and carried.steps < FULL_READ_EVERY:
-        region = changed_lines(carried.text, text)
+    left an entry as it was; then make ``carried`` describe ``text``.
+
+    An entry wholly before the changed lines stands at the same offset in both texts, one wholly
+    after them ``shift`` characters later. This loop runs once per entry of the file: keep it lean.
+    """
+    start = end = shift = 0
+    reusing = carried.line_count == line_count and carried.steps < FULL_READ_EVERY
+    if reusing:
+        start, end, shift = changed_lines(carried.text, text)
+    known = carried.places
     places: dict[int, Place] = {}
     reused = 0
     for section in (*([eds.preamble] if eds.preamble else []), *eds.sections):
         entries = section.entries
         for index, entry in enumerate(entries):
-            lead = min((c.offset for c in entry.leading_comments), default=entry.offset)
-            place = Place(entry, entry.end_offset, lead)
-            if region is not None:
-                same = _unchanged(carried.places, region, place, entry.offset)
-                if same is not None:
-                    entries[index] = place.entry = same
-                    reused += 1
-            places[entry.offset] = place
-    carried.steps = carried.steps + 1 if region is not None else 0
+            offset, entry_end, lead = entry.offset, entry.end_offset, entry.lead_offset
+            old_offset = offset if entry_end <= start else offset - shift if lead >= end else -1
+            old = known.get(old_offset) if reusing and old_offset >= 0 else None
+            if old is not None and old[0].keyword == entry.keyword and old[1] - old_offset == entry_end - offset \
+                    and old_offset - old[2] == offset - lead:
+                entries[index] = entry = old[0]
+                reused += 1
+            places[offset] = (entry, entry_end, lead)
+    carried.steps = carried.steps + 1 if reusing else 0
     carried.text, carried.line_count, carried.places = text, line_count, places
     carried.reused, carried.read = reused, len(places) - reused
-
-
-def _unchanged(known: dict[int, Place], region: tuple[int, int, int], place: Place, offset: int) -> Entry | None:
-    """The last analysis's entry for the entry at ``offset`` of the new text when the edit left it as it was."""
-    start, end, shift = region
-    if place.end <= start:
-        old_offset = offset
-    elif place.lead >= end:
-        old_offset = offset - shift
-    else:
-        return None
-    old = known.get(old_offset)
-    if old is None or old.entry.keyword != place.entry.keyword or old.end - old_offset != place.end - offset \
-            or old_offset - old.lead != offset - place.lead:
-        return None
-    return old.entry
 
 
 def changed_lines(old: str, new: str) -> tuple[int, int, int]:

@@ -92,14 +92,14 @@ def one_character_change(uri: str, text: str, version: int) -> types.DidChangeTe
                                              [types.TextDocumentContentChangePartial(range=where, text=digit)])
 
 
-def line_break_change(uri: str, version: int) -> types.DidChangeTextDocumentParams:
-    """A blank line typed at the top of the file, then deleted, by turns: an edit that moves every
-    line, which the server analyses from scratch (edsconv.lsp.incremental)."""
+def line_break_change(uri: str, version: int, typed: bool) -> types.DidChangeTextDocumentParams:
+    """A blank line typed at the top of the file (``typed``) or deleted again: an edit that moves
+    every line, which the server analyses from scratch (edsconv.lsp.incremental)."""
     at = types.Position(0, 0)
-    where = types.Range(at, types.Position(1, 0) if version % 2 else at)
+    where = types.Range(at, at if typed else types.Position(1, 0))
     return types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version=version, uri=uri),
                                              [types.TextDocumentContentChangePartial(range=where,
-                                                                                    text="" if version % 2 else "\n")])
+                                                                                    text="\n" if typed else "")])
 
 
 async def change_latency(client: Client, path: Path, repeat: int) -> dict:
@@ -127,7 +127,7 @@ async def change_latency(client: Client, path: Path, repeat: int) -> dict:
     first = 2 + 3 * repeat
     for line_version in range(first, first + 2 * repeat):
         start = time.perf_counter()
-        client.text_document_did_change(line_break_change(uri, line_version))
+        client.text_document_did_change(line_break_change(uri, line_version, (line_version - first) % 2 == 0))
         await client.next_diagnostics(uri)
         line_breaks.append(time.perf_counter() - start)
     client.text_document_did_close(types.DidCloseTextDocumentParams(document))

@@ -34,7 +34,7 @@ def environment() -> jinja2.Environment:
     env.filters.update(cell=text.cell, type_text=text.type_text, member_text=text.member_text,
                        endpoint_text=text.endpoint_text, path_text=text.path_text, reference_text=text.reference_text)
     env.globals.update(value_range=text.value_range, parameter_value=text.parameter_value,
-                       bits_text=text.bits_text, mark=view.mark, rulers=drawing.rulers())
+                       bits_text=text.bits_text, mark=view.mark)
     return env
 
 
@@ -44,7 +44,7 @@ def show_page(document: dict, title: str, diagnostics: Iterable[Diagnostic] = ()
     device = view.device_view(document, "", {})
     return environment().get_template("show.html.j2").render(
         title=title, device=device, verdict=view.verdict(diagnostics, eds, device["anchors"]),
-        icon=view.icon_uri(icon))
+        icon=view.icon_uri(icon), rulers=drawing.rulers(device["maps"].values()))
 
 
 def diff_page(old: dict, new: dict, changes: list[dict], old_title: str, new_title: str) -> str:
@@ -53,4 +53,5 @@ def diff_page(old: dict, new: dict, changes: list[dict], old_title: str, new_tit
     old_view, new_view = view.device_view(old, "a-", old_marks), view.device_view(new, "b-", new_marks)
     rows = view.change_rows(changes, old_view["anchors"], new_view["anchors"])
     return environment().get_template("diff.html.j2").render(
-        old_title=old_title, new_title=new_title, old=old_view, new=new_view, changes=rows)
+        old_title=old_title, new_title=new_title, old=old_view, new=new_view, changes=rows,
+        rulers=drawing.rulers([*old_view["maps"].values(), *new_view["maps"].values()]))

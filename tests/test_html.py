@@ -239,6 +239,10 @@ def test_script_filters_and_sorts_the_parameters(browser: chromium.Chromium, tmp
     sort = """(() => { const b = document.querySelectorAll('#ptable thead button')[1]; b.click(); b.click();
         return Array.from(document.querySelectorAll('#ptable tbody tr')).map(r => r.id); })()"""
     assert browser.evaluate(sort) == ["e-Param1", "e-Param2"]  # by name, descending: Speed before Flag
+    hover = """(() => { const block = document.querySelector('#map-Assem1 a[href="#e-Param1"]');
+        block.querySelector('path').dispatchEvent(new MouseEvent('mouseover', {bubbles: true}));
+        return block.querySelector('title').textContent; })()"""
+    assert browser.evaluate(hover) == "Param1 Speed (UINT), bits 0-15\nUINT, 2 B; range 0 .. 100; default 5 ms\nhelp <b>"
 
 
 def _difference(image: bytes, reference: Path) -> float:

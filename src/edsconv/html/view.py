@@ -132,14 +132,16 @@ def _connection_rows(connections: list[dict], marks: dict[str, str]) -> list[dic
 
 
 def _member_rows(assembly: dict, prefix: str, anchors: set[str], marks: dict[str, str]) -> list[dict]:
-    """The member list of an assembly: bits, size, the link to the member's entry and the rest of its text."""
+    """The member list of an assembly: its bits, the link to the member's entry and the rest of its text."""
     rows = []
     for index, member in enumerate(assembly["members"], 1):
         what = member["member"]
         keyword = what.get("keyword") if what["kind"] in ("parameter", "assembly") else None
         href = f"{prefix}e-{keyword}" if keyword and f"{prefix}e-{keyword}" in anchors else None
         words = member_text(what)
-        rows.append({"bits": bits_text(member["offset"], member["bits"]), "size": cell(member["bits"]) or "?",
+        where = bits_text(member["offset"], member["bits"]) if member["offset"] is not None else \
+            f"{cell(member['bits']) or '?'} bits"  # at an unknown place: its size, which the drawing cannot show
+        rows.append({"bits": where,
                      "href": href, "keyword": keyword if href else None,
                      "rest": words[len(keyword):] if href and keyword and words.startswith(keyword) else words,
                      "mark": mark(marks, f"{assembly['keyword']} member {index}") if marks else ""})

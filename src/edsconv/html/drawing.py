@@ -8,6 +8,7 @@ is one block per row it covers, sized by its bits, labelled where the label fits
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Any
 
 from edsconv.html.text import member_label, member_title
@@ -24,13 +25,21 @@ CHAR_WIDTH = 6.4
 ROW_BITS = (32, 64, 128)
 
 
-def rulers() -> list[dict]:
-    """The shared parts of every map of ``bits`` per row: its bit numbers, and the grid of its bytes and rows."""
+def rulers(maps: Iterable[dict | None]) -> list[dict]:
+    """The parts every map of ``bits`` per row shares, drawn once for the page's ``maps``: its bit numbers,
+    its byte offsets and the grid of its rows, as many rows as its tallest map (each map shows its own)."""
+    rows: dict[int, int] = {}
+    for drawing in filter(None, maps):
+        rows[drawing["row_bits"]] = max(rows.get(drawing["row_bits"], 0), drawing["rows_count"])
     result = []
     for bits in ROW_BITS:
+        if bits not in rows:
+            continue
         step = ROW_WIDTH // (bits // 8)
-        result.append({"bits": bits, "step": step, "height": ROW_HEIGHT, "left": LEFT,
-                       "ticks": [{"x": LEFT + byte * step + 2, "bit": byte * 8} for byte in range(bits // 8)]})
+        result.append({"bits": bits, "step": step, "height": ROW_HEIGHT, "left": LEFT, "row_width": ROW_WIDTH,
+                       "rows_height": rows[bits] * ROW_HEIGHT,
+                       "ticks": [{"x": LEFT + byte * step + 2, "bit": byte * 8} for byte in range(bits // 8)],
+                       "bytes": [{"y": row * ROW_HEIGHT + 35, "byte": row * bits // 8} for row in range(rows[bits])]})
     return result
 
 
@@ -49,8 +58,8 @@ def _segments(offset: int, bits: int, row_bits: int, bit_width: float) -> list[d
     while bits > 0:
         row, column = divmod(offset, row_bits)
         width = min(bits, row_bits - column)
-        segments.append({"x": _number(LEFT + column * bit_width), "y": row * ROW_HEIGHT + 18,
-                         "w": _number(width * bit_width)})
+        x, w = _number(LEFT + column * bit_width), _number(width * bit_width)
+        segments.append({"x": x, "y": row * ROW_HEIGHT + 19, "w": w, "tx": _number(x + 4), "ty": row * ROW_HEIGHT + 35})
         offset, bits = offset + width, bits - width
     return segments
 
@@ -62,7 +71,7 @@ def _fitted(label: str, width: float) -> str:
     return label[:room - 1] + "…" if room >= 4 else ""
 
 
-def bit_map(assembly: dict, parameters: dict[str, dict]) -> dict | None:
+def bit_map(assembly: dict) -> dict | None:
     """The drawing of ``assembly``'s members; None when no member has a known place."""
     placed = [m for m in assembly["members"] if m["offset"] is not None and m["bits"]]
     if not placed:
@@ -71,20 +80,20 @@ def bit_map(assembly: dict, parameters: dict[str, dict]) -> dict | None:
     row_bits = _row_bits(end)
     bit_width = ROW_WIDTH / row_bits
     blocks = []
-    for index, member in enumerate(placed):
+    for member in placed:
         what = member["member"]
         segments = _segments(member["offset"], member["bits"], row_bits, bit_width)
         label = member_label(what)
         for segment in segments:
             segment["label"] = _fitted(label, segment["w"])
-        blocks.append({"kind": what["kind"], "shade": index % 2, "segments": segments,
-                       "title": member_title(member, parameters.get(what.get("keyword", ""))),
+        # a parameter's block is the page's usual one (no class: it is most of the page's blocks)
+        blocks.append({"kind": "" if what["kind"] == "parameter" else what["kind"], "segments": segments,
+                       "title": member_title(member, all(s["label"] == label for s in segments)),
                        "keyword": what.get("keyword") if what["kind"] in ("parameter", "assembly") else None,
                        "href": None})  # the view links the block when its entry is on the page
     rows = -(-end // row_bits)
-    return {"width": LEFT + ROW_WIDTH + 2, "height": rows * ROW_HEIGHT + 22, "blocks": blocks, "left": LEFT,
-            "row_width": ROW_WIDTH,
-            "rows": [{"y": row * ROW_HEIGHT + 18, "byte": row * row_bits // 8} for row in range(rows)],
+    # the height ends below the last row's line: the page's grid is as tall as its tallest map
+    return {"width": LEFT + ROW_WIDTH + 2, "height": rows * ROW_HEIGHT + 19, "blocks": blocks,
             "row_bits": row_bits, "bit_width": bit_width, "rows_count": rows}
 
 

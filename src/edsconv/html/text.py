@@ -41,7 +41,7 @@ def reference_text(ref: dict | None) -> str:
         return ""
     kind, keyword = ref.get("kind"), ref.get("keyword", "")
     bit = f" bit {ref['bit']}" if ref.get("bit") is not None else ""
-    name = f" '{ref['name']}'" if ref.get("name") else ""
+    name = f" “{ref['name']}”" if ref.get("name") else ""
     if kind == "parameter":
         units = f" {ref['units']}" if ref.get("units") else ""
         return f"{keyword}{bit}{name}: default {cell(ref['default'])}{units}, range " \
@@ -73,20 +73,16 @@ def member_text(member: dict) -> str:
     return reference_text(member)
 
 
-def member_title(member: dict, parameter: dict | None) -> str:
-    """The hover text of a block: what it is, where, and for a parameter its type, range and help."""
-    where = bits_text(member["offset"], member["bits"])
-    what = member["member"]
-    if parameter is None:
+def member_title(member: dict, labelled: bool) -> str:
+    """The hover text of a block: what it is and where. A parameter's name only when its block's label
+    (``labelled``) does not show it whole; its type, range and help are in its row of the parameters table,
+    which the block links to (and which the page's script adds to the hover)."""
+    what, where = member["member"], bits_text(member["offset"], member["bits"])
+    if what["kind"] != "parameter":
         return f"{member_text(what)}, {where}"
     bit = f" bit {what['bit']}" if what.get("bit") is not None else ""
-    lines = [f"{what['keyword']}{bit} {cell(parameter['name'])}, {where}",
-             f"{type_text(parameter)}; range "
-             f"{value_range(parameter_value(parameter, 'minimum'), parameter_value(parameter, 'maximum'))}"
-             f"; default {parameter_value(parameter, 'default')} {cell(parameter['units'])}".rstrip()]
-    if parameter["help"]:
-        lines.append(parameter["help"])
-    return "\n".join(lines)
+    name = f" {what['name']}" if what.get("name") and not labelled else ""
+    return f"{what['keyword']}{bit}{name}, {where}"
 
 
 def endpoint_text(value: dict | None, unit: str = "") -> str:

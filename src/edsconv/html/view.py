@@ -79,17 +79,19 @@ def identity_rows(document: dict) -> list[tuple[str, str, str]]:
 
 
 def _formats(connections: list[dict], maps: dict[str, dict | None]) -> list[dict]:
-    """The connection formats that are assemblies with a drawing: their keyword and the words that name them."""
-    formats = []
+    """The assemblies with a drawing that are connection formats, each once: its keyword, and the words that
+    name it and the connections (with their direction) that use it."""
+    users: dict[str, list[str]] = {}
+    names: dict[str, str] = {}
     for c in connections:
         for direction, arrow in (("O=>T", "O→T"), ("T=>O", "T→O")):
             endpoint = c[direction]
             ref = endpoint and endpoint["format"]
             if ref and ref.get("kind") == "assembly" and maps.get(ref["keyword"]):
-                name = f" “{ref['name']}”" if ref.get("name") else ""
-                summary = f"{c['keyword']} {arrow}: {ref['keyword']}{name}"
-                formats.append({"keyword": ref["keyword"], "summary": summary})
-    return formats
+                users.setdefault(ref["keyword"], []).append(f"{c['keyword']} {arrow}")
+                names[ref["keyword"]] = f" “{ref['name']}”" if ref.get("name") else ""
+    return [{"keyword": keyword, "summary": f"{keyword}{names[keyword]}: {', '.join(used)}"}
+            for keyword, used in users.items()]
 
 
 def _trigger_text(tt: dict | None) -> str:
@@ -130,14 +132,16 @@ def _connection_rows(connections: list[dict], marks: dict[str, str]) -> list[dic
 
 
 def _member_rows(assembly: dict, prefix: str, anchors: set[str], marks: dict[str, str]) -> list[dict]:
-    """The member list of an assembly: bits, size, the link to the member's entry and the rest of its text."""
+    """The member list of an assembly: its bits, the link to the member's entry and the rest of its text."""
     rows = []
     for index, member in enumerate(assembly["members"], 1):
         what = member["member"]
         keyword = what.get("keyword") if what["kind"] in ("parameter", "assembly") else None
         href = f"{prefix}e-{keyword}" if keyword and f"{prefix}e-{keyword}" in anchors else None
         words = member_text(what)
-        rows.append({"bits": bits_text(member["offset"], member["bits"]), "size": cell(member["bits"]) or "?",
+        where = bits_text(member["offset"], member["bits"]) if member["offset"] is not None else \
+            f"{cell(member['bits']) or '?'} bits"  # at an unknown place: its size, which the drawing cannot show
+        rows.append({"bits": where,
                      "href": href, "keyword": keyword if href else None,
                      "rest": words[len(keyword):] if href and keyword and words.startswith(keyword) else words,
                      "mark": mark(marks, f"{assembly['keyword']} member {index}") if marks else ""})
@@ -150,7 +154,7 @@ def device_view(document: dict, prefix: str, marks: dict[str, str]) -> dict:
     assemblies = {a["keyword"]: a for a in (*document.get("assemblies", ()), *document.get("extended_assemblies", ()))}
     parts = [(key, title) for key, title, keys in _PARTS if any(document.get(k) for k in keys)]
     anchors = {f"{prefix}e-{keyword}" for keyword in _entry_ids(document)} | {prefix + key for key, _ in parts}
-    maps = {keyword: bit_map(assembly, parameters) for keyword, assembly in assemblies.items()}
+    maps = {keyword: bit_map(assembly) for keyword, assembly in assemblies.items()}
     for drawing in filter(None, maps.values()):
         for block in drawing["blocks"]:
             block["href"] = f"{prefix}e-{block['keyword']}" if f"{prefix}e-{block['keyword']}" in anchors else None
@@ -199,11 +203,25 @@ def verdict(diagnostics: Iterable[Diagnostic], eds: EdsFile | None, anchors: set
     for d in sorted(diagnostics, key=lambda d: (d.line, d.column)):
         at = bisect.bisect_right(lines, d.line) - 1 if d.line > 0 else -1
         href, where = _target(places[at] if at >= 0 else None, anchors)
+        # "Assem3: the path ..." about Assem3 says its entry once, as the link
+        said = bool(where) and d.message.startswith(f"{where}: ")
         findings.append({"severity": str(d.severity), "code": d.code, "line": d.line, "column": d.column,
-                         "message": d.message, "clause": d.clause, "href": href, "where": where})
+                         "message": d.message[len(where) + 2:] if said else d.message, "clause": d.clause,
+                         "href": href, "where": where, "said": said})
     counts = Counter(f["severity"] for f in findings)
     order = [str(s) for s in sorted(Severity, reverse=True)]
-    return {"findings": findings, "counts": [(name, counts[name]) for name in order if counts[name]]}
+    return {"findings": findings, "counts": [(name, counts[name]) for name in order if counts[name]],
+            "groups": _groups(findings, order)}
+
+
+def _groups(findings: list[dict], order: list[str]) -> list[dict]:
+    """The findings by code (and clause), the most severe first: a code's severity and clause are said once."""
+    by_code: dict[tuple[str, str | None], list[dict]] = {}
+    for f in findings:
+        by_code.setdefault((f["code"], f["clause"]), []).append(f)
+    groups = [{"code": code, "severity": items[0]["severity"], "clause": clause, "findings": items}
+              for (code, clause), items in by_code.items()]
+    return sorted(groups, key=lambda g: (order.index(g["severity"]), g["code"]))
 
 
 def icon_uri(data: bytes | None) -> str | None:

@@ -1,4 +1,4 @@
-// Sorting and filtering of the parameter tables; the content reads the same without this script.
+// Sorting and filtering of the parameter tables, the bit maps' full hover; the content reads the same without this script.
 "use strict";
 (function () {
   const collator = new Intl.Collator(undefined, {numeric: true, sensitivity: "base"});
@@ -44,6 +44,19 @@
       output.textContent = words.length ? shown + " of " + rows.length + " shown" : "";
     });
   }
+  // A block of a bit map links to its parameter's row, which holds what its short hover leaves out: the
+  // first hover adds the row's name (unless the title has it), type, range, default, units and help.
+  document.addEventListener("mouseover", (event) => {
+    const block = event.target.closest && event.target.closest(".m>a");
+    const row = block && !block.dataset.full && document.getElementById(block.getAttribute("href").slice(1));
+    if (!row || !row.cells || row.cells.length < 7) return;
+    const [, name, type, value, range, units, help] = Array.from(row.cells, (cell) => cell.textContent);
+    const title = block.querySelector("title");
+    block.dataset.full = "";
+    const said = title.textContent.includes(name) ? title.textContent : title.textContent.replace(",", " " + name + ",");
+    title.textContent = said +
+      "\n" + type + "; range " + range + "; default " + value + (units ? " " + units : "") + (help ? "\n" + help : "");
+  });
   // A printed page shows what the collapsed parts hold.
   window.addEventListener("beforeprint", () => {
     for (const details of document.querySelectorAll("details:not([open])")) {

@@ -108,18 +108,25 @@ def _range(parameter: Parameter) -> tuple[int, int] | None:
 
 
 @check(ENUM_CHOICE_OUT_OF_RANGE)
-def enum_ranges(ctx: Context) -> Iterator[Diagnostic]:
+def enum_ranges(ctx: Context) -> Iterable[Diagnostic]:
     """C.4.1.4.6: the choices of an EnumN are values of its parameter, within Minimum..Maximum."""
     params = ctx.eds.section("Params")
     if params is None:
-        return
+        return ()
     entries: dict[str, Entry] = {}
     for entry in params.entries:  # the first of each keyword, as Section.entry finds it: one pass, not one per EnumN
         entries.setdefault(entry.keyword, entry)
-    for parameter in ctx.device.parameters.values():
-        bounds = _range(parameter) if parameter.family in _ENUM_OF else None
-        enum = entries.get(f"{_ENUM_OF[parameter.family]}{parameter.number}") if bounds else None
-        if enum is None or bounds is None:
+    # which EnumN belongs to a parameter is decided by the section, outside the memo
+    units = ((parameter, parameter.entry, enum) for parameter in ctx.device.parameters.values()
+             if parameter.family in _ENUM_OF
+             and (enum := entries.get(f"{_ENUM_OF[parameter.family]}{parameter.number}")) is not None)
+    return ctx.each(_enum_ranges, units)
+
+
+def _enum_ranges(ctx: Context, units: Iterable[tuple[Parameter, Entry | None, Entry]]) -> Iterator[Diagnostic]:
+    for parameter, _entry, enum in units:
+        bounds = _range(parameter)
+        if bounds is None:
             continue
         for item in enum.fields[::2]:
             value = _integer(item)

@@ -163,3 +163,15 @@ def test_each_memoized_check_still_reports_its_rules_through_the_memo(name, fixt
     (check,) = [check for check in load_checks() if check.name == name]
     reported = {diagnostic.code for _, memoized in fixture_runs for diagnostic in memoized}
     assert {rule.code for rule in check.rules} & reported
+
+
+def test_a_forward_reference_within_a_section_is_told_by_lines_when_entries_come_from_two_texts():
+    """After an incremental re-read, an entry of the older text (offsets of that text) stands beside one of
+    the newer: Assem2 below Assem1 is still after it, whatever their offsets."""
+    body = PARAMS + '[Assembly]\nAssem1 = "Outer", "", 2, , , , , Assem2;\nAssem2 = "Inner", "", 2, , , , 16, ;\n'
+    eds = edsconv.parse("$ " + "long comment " * 400 + "\n" + body, "a.eds")
+    older = edsconv.parse("$ short\n" + body, "a.eds")
+    eds.sections[-1].entries[1] = older.sections[-1].entries[1]  # Assem2, at a smaller offset, the same line
+    assert eds.sections[-1].entries[1].offset < eds.sections[-1].entries[0].offset
+    (check,) = [check for check in load_checks() if check.name == "forward_references"]
+    assert [d.code for d in check.run(Context(eds, build(eds)))] == ["EDS227"]

@@ -23,9 +23,14 @@ from typing import Protocol, TypeVar
 
 from edsconv.diagnostics import EVERYTHING, Diagnostic, Rule, Selection
 from edsconv.eds.syntax import EdsFile, Entry
-from edsconv.model import Device
+from edsconv.model import Assembly, Device, Parameter
 
 _Unit = TypeVar("_Unit")
+#: Units checked together (see :meth:`CheckMemo.each`): few enough that one edited entry re-checks
+#: little, enough that an unchanged file costs a few lookups per check rather than one per entry.
+_BLOCK = 64
+#: A block of units and the identities of their objects.
+_Block = tuple[list, tuple[int, ...]]
 #: Checks each unit of a sequence on its own: reads nothing but the unit's objects and constant tables.
 UnitCheck = Callable[["Context", Iterable[_Unit]], Iterable[Diagnostic]]
 
@@ -39,6 +44,8 @@ class Context:
     memo: CheckMemo | None = None
     #: the unit lists several checks share (:meth:`shared`), by the function that makes them
     _shared: dict[Callable, list] = field(default_factory=dict, repr=False)
+    #: the blocks of each unit list the memo went over, by the list's identity (with the list, kept alive)
+    _blocks: dict[int, tuple[list, list[_Block]]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         if self.memo is not None:
@@ -66,6 +73,16 @@ class Context:
             found = self._shared[units] = list(units(self))
         return found
 
+    def blocks(self, units: Iterable) -> list[_Block]:
+        """The blocks of ``units`` and their objects' identities (:class:`CheckMemo`), made once for a
+        list that several checks go over."""
+        units = units if isinstance(units, list) else list(units)
+        found = self._blocks.get(id(units))
+        if found is None:
+            blocks = [units[start:start + _BLOCK] for start in range(0, len(units), _BLOCK)]
+            found = self._blocks[id(units)] = (units, [(block, _identities(block)) for block in blocks])
+        return found[1]
+
     def at(self, rule_: Rule, message: str, node=None, clause: str = "") -> Diagnostic:
         """A diagnostic at a syntax node (anything with line/column), or at the file start; ``clause``
         when this case has a clause of its own (see :meth:`Diagnostic.of`)."""
@@ -76,14 +93,11 @@ class Context:
 
 CheckFunction = Callable[[Context], Iterable[Diagnostic]]
 
-#: Units checked together (see :meth:`CheckMemo.each`): few enough that one edited entry re-checks
-#: little, enough that an unchanged file costs a few lookups per check rather than one per entry.
-_BLOCK = 64
 
 
-def _key(function: Callable, block: list) -> tuple:
+def _identities(block: list) -> tuple[int, ...]:
     """The objects of a block of units (all objects, or all tuples of objects), by identity."""
-    return function, *map(id, chain.from_iterable(block) if block[0].__class__ is tuple else block)
+    return tuple(map(id, chain.from_iterable(block) if block[0].__class__ is tuple else block))
 
 
 class CheckMemo:
@@ -117,11 +131,9 @@ class CheckMemo:
     def each(self, ctx: Context, function: UnitCheck[_Unit], units: Iterable[_Unit]) -> Iterator[Diagnostic]:
         """:meth:`Context.each` with this memo, a block of :data:`_BLOCK` units at a time."""
         current, previous = self._current, self._previous
-        units = units if isinstance(units, list) else list(units)
-        for start in range(0, len(units), _BLOCK):
-            block = units[start:start + _BLOCK]
-            key = _key(function, block)
-            found = current.get(key) or previous.pop(key, None)
+        for block, identities in ctx.blocks(units):
+            key = (function, identities)
+            found = previous.pop(key, None) or current.get(key)
             if found is None:
                 self.misses += 1
                 found = (block, tuple(function(ctx, block)))
@@ -180,6 +192,16 @@ _Record = TypeVar("_Record", bound=_Recorded)
 def with_entries(records: Iterable[_Record]) -> Iterator[tuple[_Record, Entry | None]]:
     """(record, its entry): the units of a check that reads records' own fields (:meth:`Context.each`)."""
     return ((record, record.entry) for record in records)
+
+
+def parameter_units(ctx: Context) -> Iterator[tuple[Parameter, Entry | None]]:
+    """Every parameter with its entry (see :meth:`Context.shared`)."""
+    return with_entries(ctx.device.parameters.values())
+
+
+def assembly_units(ctx: Context) -> Iterator[tuple[Assembly, Entry | None]]:
+    """Every assembly with its entry (see :meth:`Context.shared`)."""
+    return with_entries(ctx.device.assemblies.values())
 
 
 #: Every module that defines checks: :func:`load_checks` collects their module-level :class:`Check` objects.

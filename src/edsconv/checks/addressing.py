@@ -13,7 +13,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
-from edsconv.checks import Context, check, with_entries
+from edsconv.checks import Context, assembly_units, check, parameter_units
 from edsconv.checks.addressing_rules import (
     ASSEM_INSTANCE_MISMATCH,
     DUPLICATE_RACK,
@@ -213,8 +213,8 @@ def assembly_path_segments(ctx: Context) -> Iterator[Diagnostic]:
 def instance_numbers(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.4.6, C.4.1.4.8: the N of ParamN / AssemN is the instance their own path addresses;
     Table C.14: no Link Path Size without a Link Path."""
-    yield from ctx.each(_parameter_instances, with_entries(ctx.device.parameters.values()))
-    yield from ctx.each(_assembly_instances, with_entries(ctx.device.assemblies.values()))
+    yield from ctx.each(_parameter_instances, ctx.shared(parameter_units))
+    yield from ctx.each(_assembly_instances, ctx.shared(assembly_units))
 
 
 def _parameter_instances(ctx: Context, units: Iterable[tuple[Parameter, Entry | None]]) -> Iterator[Diagnostic]:

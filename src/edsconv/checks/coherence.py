@@ -88,6 +88,7 @@ def classified_network_ports(ctx: Context) -> Iterator[Diagnostic]:
 
 #: the parameter families whose EnumN is checked against their own range, with their Enum family
 _ENUM_OF = {"Param": "Enum", "ProxyParam": "ProxyEnum"}
+_ENUM_FAMILIES = tuple(_ENUM_OF.values())
 _INTEGER_KINDS = frozenset({"unsigned", "signed"})
 
 
@@ -115,7 +116,10 @@ def enum_ranges(ctx: Context) -> Iterable[Diagnostic]:
         return ()
     entries: dict[str, Entry] = {}
     for entry in params.entries:  # the first of each keyword, as Section.entry finds it: one pass, not one per EnumN
-        entries.setdefault(entry.keyword, entry)
+        if entry.keyword.startswith(_ENUM_FAMILIES):  # those looked up below, a fraction of a [Params]
+            entries.setdefault(entry.keyword, entry)
+    if not entries:
+        return ()
     # which EnumN belongs to a parameter is decided by the section, outside the memo
     units = ((parameter, parameter.entry, enum) for parameter in ctx.device.parameters.values()
              if parameter.family in _ENUM_OF
@@ -137,6 +141,9 @@ def _enum_ranges(ctx: Context, units: Iterable[tuple[Parameter, Entry | None, En
 
 def case_variants(names: Iterable[str]) -> set[str]:
     """The names that share their letters, in other case, with another of ``names`` (EDS230)."""
+    names = list(names)
+    if len(set(map(str.casefold, names))) == len(set(names)):
+        return set()  # the common case, told in C: as many letter sequences as spellings
     spellings: dict[str, set[str]] = {}
     for name in names:
         spellings.setdefault(name.casefold(), set()).add(name)

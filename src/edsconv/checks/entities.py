@@ -14,7 +14,7 @@ from collections.abc import Iterable, Iterator
 from typing import TypeGuard, TypeVar
 
 from edsconv import spec_tables as tables
-from edsconv.checks import Context, check, per_unit, with_entries
+from edsconv.checks import Context, assembly_units, check, parameter_units, per_unit, with_entries
 from edsconv.checks.coherence_rules import SCALING_ALL_ZERO
 from edsconv.checks.entity_rules import (
     ASSEMBLY_CYCLE,
@@ -206,6 +206,9 @@ def _enum_pairs(ctx: Context, entries: Iterable[Entry]) -> Iterator[Diagnostic]:
                          "string", last)
 
 
+_PAIRED_FAMILIES = tuple(spec.keyword for spec in tables.PARAMS_ENTRIES if spec.pairs_with)
+
+
 @check(UNPAIRED_ENTRY)
 def unpaired_entries(ctx: Context) -> Iterator[Diagnostic]:
     """EnumN and the like name a parameter by their number (EntrySpec.pairs_with)."""
@@ -214,7 +217,8 @@ def unpaired_entries(ctx: Context) -> Iterator[Diagnostic]:
         if spec is None or spec.name != "Params":
             continue
         for entry in section.entries:
-            entry_spec = spec.entry(entry.keyword)
+            # the prefix first: it is a fraction of the cost of the table lookup, which most entries fail
+            entry_spec = spec.entry(entry.keyword) if entry.keyword.startswith(_PAIRED_FAMILIES) else None
             if entry_spec is None or entry_spec.pairs_with is None:
                 continue
             partner = f"{entry_spec.pairs_with}{tables.split_numbered(entry.keyword)[1]}"
@@ -363,8 +367,8 @@ def descriptors(ctx: Context) -> Iterator[Diagnostic]:
         yield from _reserved_bits(ctx, PARAMCLASS_RESERVED_BITS, "[ParamClass] Descriptor", "parameter class "
                                   "descriptor", param_class.descriptor, tables.PARAMCLASS_DESCRIPTOR_BITS,
                                   _section_entry(ctx.device, "ParamClass", "Descriptor"))
-    yield from ctx.each(_descriptors, with_entries(ctx.device.parameters.values()))
-    yield from ctx.each(_descriptors, with_entries(ctx.device.assemblies.values()))
+    yield from ctx.each(_descriptors, ctx.shared(parameter_units))
+    yield from ctx.each(_descriptors, ctx.shared(assembly_units))
 
 
 _DESCRIPTOR_BITS = {Parameter: (PARAM_RESERVED_BITS, tables.PARAM_DESCRIPTOR_BITS),

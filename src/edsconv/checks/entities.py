@@ -206,19 +206,16 @@ def _enum_pairs(ctx: Context, entries: Iterable[Entry]) -> Iterator[Diagnostic]:
                          "string", last)
 
 
-_PAIRED_FAMILIES = tuple(spec.keyword for spec in tables.PARAMS_ENTRIES if spec.pairs_with)
-
-
 @check(UNPAIRED_ENTRY)
 def unpaired_entries(ctx: Context) -> Iterator[Diagnostic]:
     """EnumN and the like name a parameter by their number (EntrySpec.pairs_with)."""
+    paired_families = tuple(spec.keyword for spec in tables.PARAMS_ENTRIES if spec.pairs_with)
     for section in ctx.eds.sections:
         spec = tables.section_spec(section.name)
         if spec is None or spec.name != "Params":
             continue
         for entry in section.entries:
-            # the prefix first: it is a fraction of the cost of the table lookup, which most entries fail
-            entry_spec = spec.entry(entry.keyword) if entry.keyword.startswith(_PAIRED_FAMILIES) else None
+            entry_spec = spec.entry(entry.keyword) if entry.keyword.startswith(paired_families) else None
             if entry_spec is None or entry_spec.pairs_with is None:
                 continue
             partner = f"{entry_spec.pairs_with}{tables.split_numbered(entry.keyword)[1]}"

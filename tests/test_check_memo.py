@@ -175,3 +175,29 @@ def test_a_forward_reference_within_a_section_is_told_by_lines_when_entries_come
     assert eds.sections[-1].entries[1].offset < eds.sections[-1].entries[0].offset
     (check,) = [check for check in load_checks() if check.name == "forward_references"]
     assert [d.code for d in check.run(Context(eds, build(eds)))] == ["EDS227"]
+
+
+def test_an_abandoned_analysis_leaves_the_next_one_everything():
+    eds = edsconv.parse(PARAMS, "p.eds")
+    device = build(eds)
+    memo = CheckMemo()
+    checked(eds, device, memo)
+    memo.next_generation()
+    context = Context(eds, device, memo)
+    list(load_checks()[0].run(context))  # a newer text arrives after the first check
+    memo.abandon()
+    memo.next_generation()
+    before = memo.misses
+    assert checked(eds, device, memo) == checked(eds, device)
+    assert memo.misses == before
+
+
+def test_a_memo_bound_to_another_path_starts_afresh():
+    """Diagnostics carry the path: the same objects under another path (a renamed document) are checked again."""
+    eds = edsconv.parse(PARAMS.replace('"B"', '"B\\x00"'), "p.eds")
+    device = build(eds)
+    memo = CheckMemo()
+    assert {d.path for d in checked(eds, device, memo)} == {"p.eds"}
+    eds.path = "renamed.eds"
+    memo.next_generation()
+    assert {d.path for d in checked(eds, device, memo)} == {"renamed.eds"}

@@ -104,8 +104,9 @@ class CheckMemo:
     """What the checks said of each block of units in the last analysis of a document, and in this one.
 
     Generational: :meth:`next_generation` starts an analysis; what it uses (found or made) is kept
-    for the next one and the rest dropped. A stored block keeps its units' objects alive, so no new
-    object can take the identity of one whose diagnostics are stored. Diagnostics are immutable.
+    for the next one and the rest dropped (:meth:`abandon` when it stops early). One analysis at a
+    time. A stored block keeps its units' objects alive, so no new object can take the identity of
+    one whose diagnostics are stored. Diagnostics are immutable.
     """
 
     __slots__ = ("_previous", "_current", "_path", "hits", "misses")
@@ -120,6 +121,12 @@ class CheckMemo:
     def next_generation(self) -> None:
         """Start a new analysis: keep what the last one used, drop what it did not."""
         self._previous, self._current = self._current, {}
+
+    def abandon(self) -> None:
+        """The analysis under way stops before its last check (a newer text came): the next one is
+        to find what this one used and what the one before left for the checks this one never ran."""
+        self._current.update(self._previous)
+        self._previous = {}
 
     def bind(self, path: str | None) -> None:
         """Diagnostics carry the file's path: another path (a renamed document) starts afresh."""

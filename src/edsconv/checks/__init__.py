@@ -94,7 +94,6 @@ class Context:
 CheckFunction = Callable[[Context], Iterable[Diagnostic]]
 
 
-
 def _identities(block: list) -> tuple[int, ...]:
     """The objects of a block of units (all objects, or all tuples of objects), by identity."""
     return tuple(map(id, chain.from_iterable(block) if block[0].__class__ is tuple else block))

@@ -27,8 +27,14 @@ def read(path: Path) -> tuple[EdsFile, Device]:
 
 
 def checked(eds: EdsFile, device: Device, memo: CheckMemo | None = None) -> list:
+    """Every check's diagnostics, as one analysis of the language server with ``memo``."""
+    if memo is not None:
+        memo.start()
     context = Context(eds, device, memo)
-    return [diagnostic for check in load_checks() for diagnostic in check.run(context)]
+    found = [diagnostic for check in load_checks() for diagnostic in check.run(context)]
+    if memo is not None:
+        memo.finish()
+    return found
 
 
 def rebuilt_reusing(eds: EdsFile, device: Device, text: str) -> tuple[EdsFile, Device]:
@@ -67,7 +73,6 @@ def test_the_memo_changes_nothing_the_first_time_nor_again_over_the_same_objects
     assert checked(eds, device, memo) == expected
     assert memo.hits == 0 and (memo.misses > 0) == any(section.entries for section in eds.sections)
     checked_blocks = memo.misses
-    memo.next_generation()
     assert checked(eds, device, memo) == expected
     assert (memo.hits, memo.misses) == (checked_blocks, checked_blocks)  # not one unit checked again
 
@@ -106,7 +111,6 @@ def test_after_one_entry_changed_only_its_units_are_checked_again(old, new, miss
     memo = CheckMemo()
     checked(eds, device, memo)
     edited, edited_device = rebuilt_reusing(eds, device, PARAMS.replace(old, new))
-    memo.next_generation()
     before = memo.misses
     assert checked(edited, edited_device, memo) == checked(edited, edited_device)
     assert memo.misses - before == missed
@@ -118,7 +122,6 @@ def test_a_changed_range_reports_an_enumeration_out_of_it_through_the_memo():
     memo = CheckMemo()
     assert "EDS351" not in [d.code for d in checked(eds, device, memo)]
     edited, edited_device = rebuilt_reusing(eds, device, PARAMS.replace("0,3,1;", "0,0,0;"))
-    memo.next_generation()
     assert "EDS351" in [d.code for d in checked(edited, edited_device, memo)]
 
 
@@ -149,7 +152,6 @@ def fixture_runs() -> list[tuple[list, list]]:
         memo = CheckMemo()
         checked(eds, device, memo)
         again = rebuilt_reusing(eds, device, text)
-        memo.next_generation()
         runs.append((checked(*again), checked(*again, memo)))
     return runs
 
@@ -182,11 +184,8 @@ def test_an_abandoned_analysis_leaves_the_next_one_everything():
     device = build(eds)
     memo = CheckMemo()
     checked(eds, device, memo)
-    memo.next_generation()
-    context = Context(eds, device, memo)
-    list(load_checks()[0].run(context))  # a newer text arrives after the first check
-    memo.abandon()
-    memo.next_generation()
+    memo.start()
+    list(load_checks()[0].run(Context(eds, device, memo)))  # a newer text arrives after the first check
     before = memo.misses
     assert checked(eds, device, memo) == checked(eds, device)
     assert memo.misses == before
@@ -199,5 +198,17 @@ def test_a_memo_bound_to_another_path_starts_afresh():
     memo = CheckMemo()
     assert {d.path for d in checked(eds, device, memo)} == {"p.eds"}
     eds.path = "renamed.eds"
-    memo.next_generation()
     assert {d.path for d in checked(eds, device, memo)} == {"renamed.eds"}
+
+
+def test_what_a_finished_analysis_did_not_use_is_dropped():
+    eds = edsconv.parse(PARAMS, "p.eds")
+    device = build(eds)
+    memo = CheckMemo()
+    checked(eds, device, memo)
+    first = memo.misses
+    other = edsconv.parse(PARAMS, "p.eds")  # the same text read again: other objects
+    checked(other, build(other), memo)
+    before = memo.misses
+    checked(eds, device, memo)
+    assert memo.misses - before == first

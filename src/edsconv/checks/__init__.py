@@ -102,30 +102,31 @@ def _identities(block: list) -> tuple[int, ...]:
 class CheckMemo:
     """What the checks said of each block of units in the last analysis of a document, and in this one.
 
-    Generational: :meth:`next_generation` starts an analysis; what it uses (found or made) is kept
-    for the next one and the rest dropped (:meth:`abandon` when it stops early). One analysis at a
-    time. A stored block keeps its units' objects alive, so no new object can take the identity of
-    one whose diagnostics are stored. Diagnostics are immutable.
+    Generational, as :class:`edsconv.model.memo.EntryMemo`: :meth:`start` begins an analysis,
+    :meth:`finish` ends it; what a finished analysis used (found or made) is kept for the next one and
+    the rest dropped. One analysis at a time. A stored block keeps its units' objects alive, so no new
+    object can take the identity of one whose diagnostics are stored. Diagnostics are immutable.
     """
 
-    __slots__ = ("_previous", "_current", "_path", "hits", "misses")
+    __slots__ = ("_previous", "_current", "_complete", "_path", "hits", "misses")
 
     def __init__(self) -> None:
         self._previous: dict[tuple, tuple[list, tuple[Diagnostic, ...]]] = {}
         self._current: dict[tuple, tuple[list, tuple[Diagnostic, ...]]] = {}
+        self._complete = True
         self._path: str | None = None
         #: blocks of units whose diagnostics were found, and blocks checked, since the memo was made
         self.hits = self.misses = 0
 
-    def next_generation(self) -> None:
-        """Start a new analysis: keep what the last one used, drop what it did not."""
-        self._previous, self._current = self._current, {}
+    def start(self) -> None:
+        """A new analysis: what the last one used is what is known (both what it used and what the one
+        before left, when the last one stopped before its last check, superseded by a newer text)."""
+        self._previous = self._current if self._complete else {**self._previous, **self._current}
+        self._current, self._complete = {}, False
 
-    def abandon(self) -> None:
-        """The analysis under way stops before its last check (a newer text came): the next one is
-        to find what this one used and what the one before left for the checks this one never ran."""
-        self._current.update(self._previous)
-        self._previous = {}
+    def finish(self) -> None:
+        """The analysis ran every check."""
+        self._complete = True
 
     def bind(self, path: str | None) -> None:
         """Diagnostics carry the file's path: another path (a renamed document) starts afresh."""

@@ -17,8 +17,10 @@ from edsconv.model.build import build, iter_references
 
 CORPUS = sorted((REPO / "corpus").rglob("*.eds"))
 #: The largest real files, and those with the most findings of the converted checks.
-REAL = ("ME-Catalyst__iodd-manager__54611_MVK_Pro_ME_DIO8_IOL8_5P__V1.8-03_Manufacturer_2.eds",
-        "ME-Catalyst__iodd-manager__54631_IMPACT67_Pro_E_DIO8_IOL8_5P_AB.eds")
+REAL = ("ME-Catalyst__iodd-manager__54611_MVK_Pro_ME_DIO8_IOL8_5P__V1.8-03_Manufacturer_2.eds",  # the largest
+        "ME-Catalyst__iodd-manager__55544_MVK_ME_DIO12_DIO4_IOL4_4P_AllenBradley_V1_15.eds",  # 56 findings
+        "SerafinTech__node-st-eds-parse__00010003012C0100.eds",  # 34
+        "ME-Catalyst__iodd-manager__54631_IMPACT67_Pro_E_DIO8_IOL8_5P_AB.eds")  # 30
 
 
 def read(path: Path) -> tuple[EdsFile, Device]:

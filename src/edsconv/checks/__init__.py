@@ -43,9 +43,9 @@ class Context:
     #: every command, which checks a file once).
     memo: CheckMemo | None = None
     #: the unit lists several checks share (:meth:`shared`), by the function that makes them
-    _shared: dict[Callable, list] = field(default_factory=dict, repr=False)
+    _shared: dict[Callable, list] = field(default_factory=dict, init=False, repr=False)
     #: the blocks of each unit list the memo went over, by the list's identity (with the list, kept alive)
-    _blocks: dict[int, tuple[list, list[_Block]]] = field(default_factory=dict, repr=False)
+    _blocks: dict[int, tuple[list, list[_Block]]] = field(default_factory=dict, init=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.memo is not None:

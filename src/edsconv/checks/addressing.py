@@ -9,11 +9,11 @@ a segment byte, a segment type it does not know); nothing beyond that point is r
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from edsconv import spec_tables as tables
-from edsconv.checks import Context, check
+from edsconv.checks import Context, assembly_units, check, parameter_units
 from edsconv.checks.addressing_rules import (
     ASSEM_INSTANCE_MISMATCH,
     DUPLICATE_RACK,
@@ -28,6 +28,7 @@ from edsconv.checks.addressing_rules import (
 )
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import Entry
+from edsconv.model import Assembly, Parameter
 from edsconv.model.values import PathItem
 
 #: Segment types (bits 5-7 of the segment byte, CIP Vol 1 C-1.4).
@@ -212,22 +213,29 @@ def assembly_path_segments(ctx: Context) -> Iterator[Diagnostic]:
 def instance_numbers(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.4.6, C.4.1.4.8: the N of ParamN / AssemN is the instance their own path addresses;
     Table C.14: no Link Path Size without a Link Path."""
-    for parameter in ctx.device.parameters.values():
+    yield from ctx.each(_parameter_instances, ctx.shared(parameter_units))
+    yield from ctx.each(_assembly_instances, ctx.shared(assembly_units))
+
+
+def _parameter_instances(ctx: Context, units: Iterable[tuple[Parameter, Entry | None]]) -> Iterator[Diagnostic]:
+    for parameter, entry in units:
         instance = addressed_instance(parameter.link_path, _PARAMETER_CLASS)
         if instance is not None and instance != parameter.number:
             yield ctx.at(PARAM_INSTANCE_MISMATCH, f"{parameter.keyword}: the link path addresses Parameter "
-                         f"instance {instance}, not {parameter.number}", _field(parameter.entry, _LINK_PATH))
-        entry = parameter.entry
+                         f"instance {instance}, not {parameter.number}", _field(entry, _LINK_PATH))
         if entry is not None and len(entry.fields) > _LINK_SIZE and entry.fields[_LINK_SIZE].value is not None \
                 and (len(entry.fields) <= _LINK_PATH or entry.fields[_LINK_PATH].value is None):
             yield ctx.at(LINK_SIZE_WITHOUT_PATH, f"{parameter.keyword}: Link Path Size "
                          f"{entry.fields[_LINK_SIZE].raw} without a Link Path; leave the size empty when the "
                          "parameter is not addressable", entry.fields[_LINK_SIZE])
-    for assembly in ctx.device.assemblies.values():
+
+
+def _assembly_instances(ctx: Context, units: Iterable[tuple[Assembly, Entry | None]]) -> Iterator[Diagnostic]:
+    for assembly, entry in units:
         instance = addressed_instance(assembly.path, _ASSEMBLY_CLASS)
         if instance is not None and instance != assembly.number:
             yield ctx.at(ASSEM_INSTANCE_MISMATCH, f"{assembly.keyword}: the path addresses Assembly instance "
-                         f"{instance}, not {assembly.number}", _field(assembly.entry, _ASSEM_PATH))
+                         f"{instance}, not {assembly.number}", _field(entry, _ASSEM_PATH))
 
 
 # --- ports, racks, slots ----------------------------------------------------------------------

@@ -88,6 +88,7 @@ def classified_network_ports(ctx: Context) -> Iterator[Diagnostic]:
 
 #: the parameter families whose EnumN is checked against their own range, with their Enum family
 _ENUM_OF = {"Param": "Enum", "ProxyParam": "ProxyEnum"}
+_ENUM_FAMILIES = tuple(_ENUM_OF.values())
 _INTEGER_KINDS = frozenset({"unsigned", "signed"})
 
 
@@ -108,18 +109,28 @@ def _range(parameter: Parameter) -> tuple[int, int] | None:
 
 
 @check(ENUM_CHOICE_OUT_OF_RANGE)
-def enum_ranges(ctx: Context) -> Iterator[Diagnostic]:
+def enum_ranges(ctx: Context) -> Iterable[Diagnostic]:
     """C.4.1.4.6: the choices of an EnumN are values of its parameter, within Minimum..Maximum."""
     params = ctx.eds.section("Params")
     if params is None:
-        return
+        return ()
     entries: dict[str, Entry] = {}
     for entry in params.entries:  # the first of each keyword, as Section.entry finds it: one pass, not one per EnumN
-        entries.setdefault(entry.keyword, entry)
-    for parameter in ctx.device.parameters.values():
-        bounds = _range(parameter) if parameter.family in _ENUM_OF else None
-        enum = entries.get(f"{_ENUM_OF[parameter.family]}{parameter.number}") if bounds else None
-        if enum is None or bounds is None:
+        if entry.keyword.startswith(_ENUM_FAMILIES):  # those looked up below, a fraction of a [Params]
+            entries.setdefault(entry.keyword, entry)
+    if not entries:
+        return ()
+    # which EnumN belongs to a parameter is decided by the section, outside the memo
+    units = ((parameter, parameter.entry, enum) for parameter in ctx.device.parameters.values()
+             if parameter.family in _ENUM_OF
+             and (enum := entries.get(f"{_ENUM_OF[parameter.family]}{parameter.number}")) is not None)
+    return ctx.each(_enum_ranges, units)
+
+
+def _enum_ranges(ctx: Context, units: Iterable[tuple[Parameter, Entry | None, Entry]]) -> Iterator[Diagnostic]:
+    for parameter, _entry, enum in units:
+        bounds = _range(parameter)
+        if bounds is None:
             continue
         for item in enum.fields[::2]:
             value = _integer(item)
@@ -130,6 +141,9 @@ def enum_ranges(ctx: Context) -> Iterator[Diagnostic]:
 
 def case_variants(names: Iterable[str]) -> set[str]:
     """The names that share their letters, in other case, with another of ``names`` (EDS230)."""
+    names = list(names)
+    if len(set(map(str.casefold, names))) == len(set(names)):
+        return set()  # the common case, told in C: as many letter sequences as spellings
     spellings: dict[str, set[str]] = {}
     for name in names:
         spellings.setdefault(name.casefold(), set()).add(name)

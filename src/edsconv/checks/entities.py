@@ -14,7 +14,7 @@ from collections.abc import Iterable, Iterator
 from typing import TypeGuard, TypeVar
 
 from edsconv import spec_tables as tables
-from edsconv.checks import Context, check
+from edsconv.checks import Context, assembly_units, check, parameter_units, per_unit, with_entries
 from edsconv.checks.coherence_rules import SCALING_ALL_ZERO
 from edsconv.checks.entity_rules import (
     ASSEMBLY_CYCLE,
@@ -93,6 +93,13 @@ def _own(entities: Iterable[_E]) -> Iterator[_E]:
     elsewhere. Rules that relate fields of one entry to each other (sizes against formats, minimum
     against maximum, Size against members) apply to the entry the pair forms: ``edsconv merge`` checks it."""
     return (entity for entity in entities if not entity.family.startswith("Proxied"))
+
+
+_ParameterUnits = Iterable[tuple[Parameter, Entry | None]]
+
+
+def _own_parameters(ctx: Context) -> _ParameterUnits:
+    return with_entries(_own(ctx.device.parameters.values()))
 
 
 def _is_number(value: object) -> TypeGuard[int | float]:
@@ -185,26 +192,30 @@ def _written_count(entry: Entry) -> int:
 def enum_pairs(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.4.6: "Each Enum entry shall consist of pairs of integers and strings"."""
     for section in ctx.eds.sections:
-        if section.name != "Params":
-            continue
-        for entry in section.entries:
-            spec = tables.entry_spec("Params", entry.keyword)
-            count = _written_count(entry)
-            if spec is not None and spec.fields == tables.ENUM_FIELDS and count % 2:
-                last = entry.fields[count - 1]
-                yield ctx.at(ENUM_NOT_PAIRS, f"{entry.keyword} has {count} fields; its last value {last.raw} has no "
-                             "string", last)
+        if section.name == "Params":
+            yield from ctx.each(_enum_pairs, section.entries)
+
+
+def _enum_pairs(ctx: Context, entries: Iterable[Entry]) -> Iterator[Diagnostic]:
+    for entry in entries:
+        spec = tables.entry_spec("Params", entry.keyword)
+        count = _written_count(entry)
+        if spec is not None and spec.fields == tables.ENUM_FIELDS and count % 2:
+            last = entry.fields[count - 1]
+            yield ctx.at(ENUM_NOT_PAIRS, f"{entry.keyword} has {count} fields; its last value {last.raw} has no "
+                         "string", last)
 
 
 @check(UNPAIRED_ENTRY)
 def unpaired_entries(ctx: Context) -> Iterator[Diagnostic]:
     """EnumN and the like name a parameter by their number (EntrySpec.pairs_with)."""
+    paired_families = tuple(spec.keyword for spec in tables.PARAMS_ENTRIES if spec.pairs_with)
     for section in ctx.eds.sections:
         spec = tables.section_spec(section.name)
         if spec is None or spec.name != "Params":
             continue
         for entry in section.entries:
-            entry_spec = spec.entry(entry.keyword)
+            entry_spec = spec.entry(entry.keyword) if entry.keyword.startswith(paired_families) else None
             if entry_spec is None or entry_spec.pairs_with is None:
                 continue
             partner = f"{entry_spec.pairs_with}{tables.split_numbered(entry.keyword)[1]}"
@@ -353,12 +364,18 @@ def descriptors(ctx: Context) -> Iterator[Diagnostic]:
         yield from _reserved_bits(ctx, PARAMCLASS_RESERVED_BITS, "[ParamClass] Descriptor", "parameter class "
                                   "descriptor", param_class.descriptor, tables.PARAMCLASS_DESCRIPTOR_BITS,
                                   _section_entry(ctx.device, "ParamClass", "Descriptor"))
-    for parameter in ctx.device.parameters.values():
-        yield from _reserved_bits(ctx, PARAM_RESERVED_BITS, parameter.keyword, "descriptor", parameter.descriptor,
-                                  tables.PARAM_DESCRIPTOR_BITS, _node(parameter.entry, 3))
-    for assembly in ctx.device.assemblies.values():
-        yield from _reserved_bits(ctx, ASSEMBLY_RESERVED_BITS, assembly.keyword, "descriptor", assembly.descriptor,
-                                  tables.ASSEM_DESCRIPTOR_BITS, _node(assembly.entry, 3))
+    yield from ctx.each(_descriptors, ctx.shared(parameter_units))
+    yield from ctx.each(_descriptors, ctx.shared(assembly_units))
+
+
+_DESCRIPTOR_BITS = {Parameter: (PARAM_RESERVED_BITS, tables.PARAM_DESCRIPTOR_BITS),
+                    Assembly: (ASSEMBLY_RESERVED_BITS, tables.ASSEM_DESCRIPTOR_BITS)}
+
+
+def _descriptors(ctx: Context, units: Iterable[tuple[Parameter | Assembly, Entry | None]]) -> Iterator[Diagnostic]:
+    for record, entry in units:
+        rule_, table = _DESCRIPTOR_BITS[record.__class__]
+        yield from _reserved_bits(ctx, rule_, record.keyword, "descriptor", record.descriptor, table, _node(entry, 3))
 
 
 def _type_bounds(data_type: tables.DataType) -> tuple[float | None, float | None]:
@@ -385,8 +402,9 @@ def _bounds(parameter: Parameter, data_type: tables.DataType) -> tuple[float, fl
 
 
 @check(VALUE_ORDER)
-def parameter_value_order(ctx: Context) -> Iterator[Diagnostic]:
-    for parameter in _own(ctx.device.parameters.values()):
+@per_unit(_own_parameters)
+def parameter_value_order(ctx: Context, units: _ParameterUnits) -> Iterator[Diagnostic]:
+    for parameter, _entry in units:
         data_type = parameter.data_type
         if data_type is None:
             continue
@@ -417,12 +435,12 @@ def _deferred(entry: Entry | None, index: int) -> bool:
 
 
 @check(STRING_LENGTHS_MISSING, BIT_STRING_MIN_MAX)
-def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
+@per_unit(_own_parameters)
+def parameter_min_max_presence(ctx: Context, units: _ParameterUnits) -> Iterator[Diagnostic]:
     """Table C.17: required for strings, not allowed for bit strings."""
-    for parameter in _own(ctx.device.parameters.values()):
-        if parameter.data_type is None or parameter.entry is None:
+    for parameter, entry in units:
+        if parameter.data_type is None or entry is None:
             continue
-        entry = parameter.entry
         presence = tables.min_max_rule(parameter.data_type.name).presence
         name = parameter.data_type.name
         if presence is tables.Presence.REQUIRED:
@@ -439,10 +457,11 @@ def parameter_min_max_presence(ctx: Context) -> Iterator[Diagnostic]:
 
 
 @check(SCALING_ON_NON_NUMERIC, SCALING_ZERO, SCALING_ALL_ZERO)
-def parameter_scaling(ctx: Context) -> Iterator[Diagnostic]:
+@per_unit(_own_parameters)
+def parameter_scaling(ctx: Context, units: _ParameterUnits) -> Iterator[Diagnostic]:
     scaling_bit = tables.PARAM_DESCRIPTOR_BITS.field("Supports scaling")
-    for parameter in _own(ctx.device.parameters.values()):
-        entry, data_type = parameter.entry, parameter.data_type
+    for parameter, entry in units:
+        data_type = parameter.data_type
         if data_type is None or entry is None:
             continue
         if not data_type.numeric:
@@ -471,8 +490,9 @@ def _expected_data_size(data_type: tables.DataType) -> int | None:
 
 
 @check(DATA_SIZE_MISMATCH)
-def parameter_data_sizes(ctx: Context) -> Iterator[Diagnostic]:
-    for parameter in _own(ctx.device.parameters.values()):
+@per_unit(_own_parameters)
+def parameter_data_sizes(ctx: Context, units: _ParameterUnits) -> Iterator[Diagnostic]:
+    for parameter, _entry in units:
         data_type, size = parameter.data_type, parameter.data_size
         if data_type is None or not _is_int(size):
             continue

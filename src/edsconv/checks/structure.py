@@ -18,11 +18,12 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Iterator
+import sys
+from collections.abc import Iterable, Iterator
 
 from edsconv import cip_tables
 from edsconv import spec_tables as tables
-from edsconv.checks import Context, check, keywords
+from edsconv.checks import Context, check, keywords, per_unit
 from edsconv.checks.coherence import case_variants
 from edsconv.checks.coherence_rules import FORWARD_REFERENCE_IN_SECTION, UNDEFINED_SECTION
 from edsconv.checks.structure_rules import (
@@ -236,7 +237,8 @@ def forward_references(ctx: Context) -> Iterator[Diagnostic]:
             continue
         node = entry.fields[field_index] if field_index < len(entry.fields) else entry
         if target[0] == source[0]:
-            if target_entry.offset > entry.offset:
+            # positions, not offsets: an incremental re-read keeps entries of an older text beside new ones
+            if (target_entry.line, target_entry.column) > (entry.line, entry.column):
                 reported.add((source[0], target[0]))
                 yield ctx.at(FORWARD_REFERENCE_IN_SECTION, f"{entry.keyword} refers to {named}, placed later in "
                              f"[{source[1].name}] (line {target_entry.line}); C.4.1.2.1 asks for no forward "
@@ -307,22 +309,27 @@ def entry_keywords(ctx: Context) -> Iterator[Diagnostic]:
     digit, keywords the 2003 text does not define in their section (kept, reported as
     information) and keywords no table defines (a warning)."""
     for section in ctx.eds.sections:
-        spec = tables.SECTIONS.get(section.name)
-        newer = spec is None and cip_tables.section_spec(section.name) is not None
+        name = sys.intern(section.name)  # one object for every analysis: the memo knows units by identity
+        tabled = name in tables.SECTIONS or cip_tables.section_spec(name) is not None
         variants = case_variants(entry.keyword for entry in section.entries)  # EDS230 says what they are
-        for entry in section.entries:
-            problem = _keyword_problem(entry.keyword)
-            if problem is not None:
-                yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
-            elif (spec is not None or newer) and entry.keyword not in variants \
-                    and cip_tables.known(section.name, entry.keyword) is None:
-                if tables.entries_named(entry.keyword) or keywords.newer_entry(section.name, entry.keyword):
-                    yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(section.name, entry.keyword)} "
-                                                      "(kept)", entry)
-                else:
-                    meant = keywords.closest(entry.keyword, *keywords.entry_keywords(section.name))
-                    yield ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} in [{section.name}] {_UNDEFINED}"
-                                                  f"{_did_you_mean(meant)}", entry, clause="C.4.1.2.2.9")
+        # whether a table is asked about the keyword: decided by the section, outside the memo
+        yield from ctx.each(_entry_keywords, ((entry, name, tabled and entry.keyword not in variants)
+                                              for entry in section.entries))
+
+
+def _entry_keywords(ctx: Context, units: Iterable[tuple[Entry, str, bool]]) -> Iterator[Diagnostic]:
+    for entry, section, looked_up in units:
+        problem = _keyword_problem(entry.keyword)
+        if problem is not None:
+            yield ctx.at(problem[0], f"entry {entry.keyword}: {problem[1]}", entry)
+        elif looked_up and cip_tables.known(section, entry.keyword) is None:
+            if tables.entries_named(entry.keyword) or keywords.newer_entry(section, entry.keyword):
+                yield ctx.at(KEYWORD_BEYOND_2003, f"{entry.keyword} {_why_undefined(section, entry.keyword)} "
+                                                  "(kept)", entry)
+            else:
+                meant = keywords.closest(entry.keyword, *keywords.entry_keywords(section))
+                yield ctx.at(UNKNOWN_KEYWORD, f"{entry.keyword} in [{section}] {_UNDEFINED}"
+                                              f"{_did_you_mean(meant)}", entry, clause="C.4.1.2.2.9")
 
 
 def _why_undefined(section: str, keyword: str) -> str:
@@ -358,9 +365,10 @@ def numbering(ctx: Context) -> Iterator[Diagnostic]:
 
 
 @check(REQUIRED_FIELD_EMPTY, TOO_MANY_FIELDS, FIELDS_BEYOND_2003, RESERVED_FIELD_SET)
-def field_counts(ctx: Context) -> Iterator[Diagnostic]:
+@per_unit(_specified_entries)
+def field_counts(ctx: Context, units: Iterable[tuple[Entry, tables.EntrySpec]]) -> Iterator[Diagnostic]:
     """Required fields present and not empty; no fields beyond the layout; reserved fields empty."""
-    for entry, spec in _specified_entries(ctx):
+    for entry, spec in units:
         missing = []
         fields = entry.fields
         for required in _required_fields(spec):
@@ -427,9 +435,10 @@ def _choice_fields(spec: tables.EntrySpec, count: int) -> tuple[tuple[int, table
 
 
 @check(NOT_A_CHOICE, VENDOR_ID_LEADING_ZERO, KEYWORD_STARTS_WITH_DIGIT)
-def field_keywords(ctx: Context) -> Iterator[Diagnostic]:
+@per_unit(_specified_entries)
+def field_keywords(ctx: Context, units: Iterable[tuple[Entry, tables.EntrySpec]]) -> Iterator[Diagnostic]:
     """Fields limited to a list of keywords or values (FieldSpec.choices)."""
-    for entry, spec in _specified_entries(ctx):
+    for entry, spec in units:
         fields = entry.fields
         for index, field_spec, is_keyword_field in _choice_fields(spec, len(fields)):
             item = fields[index]
@@ -471,14 +480,18 @@ def _not_a_choice(ctx: Context, entry: Entry, index: int, word: str, field_spec:
 def string_characters(ctx: Context) -> Iterator[Diagnostic]:
     """C.4.1.3.2 and C.4.1.3.3.1: no control characters and no null terminator, in every string of the file."""
     for section in ctx.eds.sections:
-        for entry in section.entries:
-            fields = entry.fields
-            # walk_fields only for an entry with brace groups: a flat entry's fields are its walk
-            for item in entry.walk_fields() if any(f.value.__class__ is Group for f in fields) else fields:
-                value = item.value
-                flaw = string_flaw(value) if value.__class__ is String else None
-                if flaw is not None:
-                    yield ctx.at(flaw[0], f"{entry.keyword}: {flaw[1]}", item)
+        yield from ctx.each(_string_characters, section.entries)
+
+
+def _string_characters(ctx: Context, entries: Iterable[Entry]) -> Iterator[Diagnostic]:
+    for entry in entries:
+        fields = entry.fields
+        # walk_fields only for an entry with brace groups: a flat entry's fields are its walk
+        for item in entry.walk_fields() if any(f.value.__class__ is Group for f in fields) else fields:
+            value = item.value
+            flaw = string_flaw(value) if value.__class__ is String else None
+            if flaw is not None:
+                yield ctx.at(flaw[0], f"{entry.keyword}: {flaw[1]}", item)
 
 
 # --- classification, identity, file description ---------------------------------------

@@ -14,7 +14,9 @@ from conftest import REPO, SHARED_REAL
 from edsconv.lsp.analysis import Analysis, analyse
 from edsconv.lsp.incremental import FULL_READ_EVERY, Carried, changed_lines
 
-EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text(encoding="ascii")
+#: with a suppression on an entry, so that the suppressions' lines are compared too
+EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text(encoding="ascii").replace(
+    "ProdCode = 1001;", "ProdCode = 1001;   $ edsconv: ignore[EDS103]")
 #: what an edit may type or delete: the characters that change how an EDS reads
 TYPED = list(';,"$[]{}=0123456789xAZaz -.\\\t')
 
@@ -24,7 +26,8 @@ def answers(analysis: Analysis) -> tuple:
     return ([(d.code, d.severity, d.line, d.column, d.end_line, d.end_column, d.message) for d in analysis.diagnostics],
             sorted((s.target, s.line, s.column, s.end_column, s.kind, s.entry) for s in analysis.spans),
             {keyword: (entry.line, entry.column) for keyword, entry in analysis.definitions.items()},
-            analysis.device, analysis.device.comments, analysis.device.unreadable, analysis.device.erroneous)
+            analysis.device, analysis.device.comments, analysis.device.unreadable, analysis.device.erroneous,
+            [(c.text, c.line, c.column, reach) for c, reach in analysis.directives or []])
 
 
 def edited(text: str, rng: random.Random, *, inside_a_line: bool = True) -> str:
@@ -95,10 +98,13 @@ def test_a_keystroke_inside_a_value_reads_only_its_entry_and_builds_only_its_rec
     offset = text.index(",", offset) - 1  # the last character of Param1's first field
     changed = text[:offset] + ("7" if text[offset] != "7" else "8") + text[offset + 1:]
     hits, misses = carried.memo.hits, carried.memo.misses
+    checks_hits, checks_misses = carried.checks.hits, carried.checks.misses
     analyse(changed, carried=carried)
     assert carried.read == 1 and carried.reused > 500
     # Param1's record, comments and spans are made anew (3 misses); everything else is found
     assert carried.memo.misses - misses == 3 and carried.memo.hits - hits > 1000
+    # the checks look again only at the blocks of units Param1 is in (a block a check)
+    assert 0 < carried.checks.misses - checks_misses <= 15 < carried.checks.hits - checks_hits
 
 
 def test_a_new_line_and_every_sixteenth_edit_read_the_whole_text_again():

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import enum
 import functools
+import operator
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -431,6 +432,16 @@ class EdsFile:
         from edsconv.diagnostics import has_errors
 
         return has_errors(self.diagnostics)
+
+
+_FIELD_COMMENTS = operator.attrgetter("_comments")
+_FIELD_VALUE = operator.attrgetter("value")
+
+
+def plain_fields(fields: list[Field]) -> bool:
+    """True when no field has a comment and none is a brace group, as most entries: told in C, without
+    a loop in Python (which, on a file of 40,000 entries, took a quarter of a second)."""
+    return not any(map(_FIELD_COMMENTS, fields)) and Group not in map(type, map(_FIELD_VALUE, fields))
 
 
 def _comments_json(comments: list[Comment]) -> list[str]:

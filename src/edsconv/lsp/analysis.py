@@ -28,11 +28,14 @@ from edsconv.eds.syntax import EdsFile, Entry
 from edsconv.lsp.incremental import Carried, reuse_entries
 from edsconv.model import Device
 from edsconv.model.references import Occurrence, definitions, occurrences
+from edsconv.suppress import Directives, directive_comments
 
 #: Seconds without an analysis after which the garbage of the earlier ones is collected (see :class:`Analyses`)
 IDLE_COLLECTION = 1.0
-#: Every this many collections in a pause, a full one (the older generations too)
-FULL_COLLECTION_EVERY = 10
+#: Every this many collections in a pause, a full one (the older generations too): rare, since it scans
+#: every object the open documents' analyses and memos hold (a second or more for a 3 MB file), and the
+#: young generations, collected every time, hold what an analysis made
+FULL_COLLECTION_EVERY = 50
 
 #: A line and its line end: LSP breaks lines at \r\n, \r and \n only (as the EDS reader does).
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")
@@ -52,6 +55,8 @@ class Analysis:
     spans: list[Occurrence] = field(repr=False)
     #: the entries references can name, by keyword
     definitions: dict[str, Entry] = field(repr=False)
+    #: the comments that may be suppressions (:func:`edsconv.suppress.directive_comments`), once checked
+    directives: Directives | None = field(default=None, repr=False)
 
     def line_text(self, line: int) -> str:
         """Line ``line`` (1-based) without its line end; "" beyond the end."""
@@ -104,15 +109,22 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
             step()
             analysis = Analysis(version, text, lines, eds, device, [], occurrences(eds, device, lines, memo),
                                 definitions(device))
-            if memo is not None:
-                memo.finish()
             if readable is not None:
                 readable(analysis)
             diagnostics = [*eds.diagnostics, *device.diagnostics]
-            context = Context(eds, device)
+            checks = carried.checks if carried is not None else None
+            if checks is not None:
+                checks.bind(path)
+                checks.start()
+            context = Context(eds, device, checks)
             for check in load_checks():
                 step()
                 diagnostics += check.run(context)
+            if checks is not None:
+                checks.finish()
+            analysis.directives = directive_comments(eds, memo)
+            if memo is not None:
+                memo.finish()
         except Superseded:
             raise
         except Exception as error:  # noqa: BLE001 - the editor gets a diagnostic, the server keeps running

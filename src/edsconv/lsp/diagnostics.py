@@ -112,4 +112,5 @@ class Publisher:
             self._server.window_show_message(types.ShowMessageParams(
                 types.MessageType.Warning, f"edsconv: the configuration cannot be read, the defaults apply: "
                                            f"{settings.error}"))
-        return [to_lsp(d, analysis, positions) for d in settings.kept(analysis.eds, analysis.diagnostics)]
+        shown = settings.kept(analysis.eds, analysis.diagnostics, analysis.directives)
+        return [to_lsp(d, analysis, positions) for d in shown]

@@ -21,6 +21,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from edsconv.checks import CheckMemo
 from edsconv.eds.syntax import EdsFile, Entry
 from edsconv.model.memo import EntryMemo
 
@@ -48,6 +49,8 @@ class Carried:
     places: dict[int, Place] = field(default_factory=dict)
     #: what was made from the entries (records, comments, the places naming other entries)
     memo: EntryMemo = field(default_factory=EntryMemo)
+    #: what the checks said of the entries and records (blocks of them)
+    checks: CheckMemo = field(default_factory=CheckMemo)
     #: incremental analyses since the last one from scratch
     steps: int = 0
     #: entries re-used by the last analysis, and entries read anew (for the tests and benchmarks)

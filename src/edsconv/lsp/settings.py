@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from edsconv.config import ConfigError, FileRules, Resolver
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.eds.syntax import EdsFile
-from edsconv.suppress import apply_suppressions
+from edsconv.suppress import Directives, apply_suppressions
 
 
 @dataclass(frozen=True, slots=True)
@@ -33,10 +33,11 @@ class Settings:
     def reports(self, diagnostic: Diagnostic) -> bool:
         return self.rules.reports(diagnostic.code)
 
-    def kept(self, eds: EdsFile, diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
+    def kept(self, eds: EdsFile, diagnostics: Iterable[Diagnostic], directives: Directives | None = None) \
+            -> list[Diagnostic]:
         """The diagnostics to show: selected, not suppressed, warnings promoted when so configured (as copies:
-        the analysis keeps its own)."""
-        shown = apply_suppressions(eds, self.rules.kept(diagnostics), self.rules.reports)
+        the analysis keeps its own). ``directives``: the file's suppression comments, when found already."""
+        shown = apply_suppressions(eds, self.rules.kept(diagnostics), self.rules.reports, directives)
         if self.rules.warnings_as_errors:
             shown = [dataclasses.replace(d, severity=Severity.ERROR) if d.severity is Severity.WARNING else d
                      for d in shown]

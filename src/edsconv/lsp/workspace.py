@@ -180,7 +180,7 @@ class WorkspaceChecker:
         analysis = analyse(text, None, path)
         positions = Positions(self._codec(), analysis.lines)
         uri = self.uri(path)
-        shown = self._settings(uri).kept(analysis.eds, analysis.diagnostics)
+        shown = self._settings(uri).kept(analysis.eds, analysis.diagnostics, analysis.directives)
         return Checked(stamp, [to_lsp(d, analysis, positions) for d in shown], symbols_of(analysis))
 
     @staticmethod

@@ -9,7 +9,6 @@ diagnostics on the field; the structural checks live in :mod:`edsconv.checks`.
 from __future__ import annotations
 
 import functools
-import operator
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -17,7 +16,7 @@ from typing import Any
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Severity, rule
-from edsconv.eds.syntax import EdsFile, Entry, Field, Group, Scalar, String, Value, ValueKind
+from edsconv.eds.syntax import EdsFile, Entry, Field, Group, Scalar, String, Value, ValueKind, plain_fields
 from edsconv.limits import MAX_DIGITS, TOO_MANY_DIGITS, cut, shown
 from edsconv.model import (
     MODULE,
@@ -534,18 +533,13 @@ class _Builder:
             setattr(modular, SINGLE_ENTRY_ATTRIBUTES["Modular"][keyword], self.single(entry, spec))
 
 
-_HAS_COMMENTS = operator.attrgetter("has_comments")
-_VALUE_OF = operator.attrgetter("value")
-
-
 def _entry_notes(section: str, entry: Entry) -> list[CommentNote]:
     """The comments of an entry and of its fields, as notes."""
     keyword = entry.keyword
     notes = [CommentNote(section, keyword, None, c.text, True) for c in entry.leading_comments]
     notes += [CommentNote(section, keyword, None, c.text) for c in entry.comments]
     fields = entry.fields
-    # most entries have neither comments nor groups: tell them in C, without a loop in Python
-    if not any(map(_HAS_COMMENTS, fields)) and Group not in map(type, map(_VALUE_OF, fields)):
+    if plain_fields(fields):
         return notes
     for index, item in enumerate(fields):
         if item.has_comments:

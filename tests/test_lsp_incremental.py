@@ -18,12 +18,26 @@ from edsconv.lsp.incremental import FULL_READ_EVERY, Carried, changed_lines
 EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text(encoding="ascii").replace(
     "ProdCode = 1001;", "ProdCode = 1001;   $ edsconv: ignore[EDS103]")
 #: what an edit may type or delete: the characters that change how an EDS reads
-TYPED = list(';,"$[]{}=0123456789xAZaz -.\\\t')
+TYPED = [*';,"$[]{}=0123456789xAZaz -.\\\t', "\u00e9"]
+
+
+def positions(analysis: Analysis) -> list:
+    """Where every section, entry, field and comment of the syntax model stands."""
+    eds = analysis.eds
+    return [(section.line, section.column, [entry_positions(entry) for entry in section.entries])
+            for section in [*([eds.preamble] if eds.preamble else []), *eds.sections]]
+
+
+def entry_positions(entry) -> tuple:
+    comments = [*entry.leading_comments, *entry.comments, *(c for f in entry.fields for c in f.comments)]
+    return (entry.line, entry.column, [(f.line, f.column) for f in entry.fields],
+            [(c.line, c.column) for c in comments])
 
 
 def answers(analysis: Analysis) -> tuple:
-    """Everything an analysis answers with: diagnostics, the places naming entries, the model."""
-    return ([(d.code, d.severity, d.line, d.column, d.end_line, d.end_column, d.message) for d in analysis.diagnostics],
+    """Everything an analysis answers with: diagnostics, the places naming entries, the models, the lines."""
+    return (analysis.lines, analysis.eds, positions(analysis),
+            [(d.code, d.severity, d.line, d.column, d.end_line, d.end_column, d.message) for d in analysis.diagnostics],
             sorted((s.target, s.line, s.column, s.end_column, s.kind, s.entry) for s in analysis.spans),
             {keyword: (entry.line, entry.column) for keyword, entry in analysis.definitions.items()},
             analysis.device, analysis.device.comments, analysis.device.unreadable, analysis.device.erroneous,
@@ -137,3 +151,49 @@ def test_changed_lines_past_the_first_compared_chunk():
     at = len(line) * 3000 + 5
     new = old[:at] + "9" + old[at + 1:]
     assert changed_lines(old, new) == (len(line) * 3000, len(line) * 3001, 0)
+
+
+#: (what to find in EXAMPLE, what to put instead, whether only that entry is read again)
+EDITS = [
+    ('"microseconds",', '"milliseconds",', True),  # inside a string
+    ("$ Data Type: UDINT", "$ Data Type: UINT", True),  # a comment between the fields
+    ("ProdCode = 1001;   $ edsconv: ignore[EDS103]", "ProdCode = 1002;   $ edsconv: ignore[EDS103]", True),
+    ("ProdCode = 1001;   $ edsconv: ignore[EDS103]", "ProdCode = 1001;   $ edsconv: ignore[EDS104]", False),
+    ("ProdCode = 1001;", "ProdCodes = 1001;", False),  # the keyword
+    ("ProdCode = 1001;", "ProdCode = 10;01;", False),  # a ';' ends the entry earlier
+    ('"microseconds",', '"micro"seconds",', False),  # a string left open reads on
+    ('"microseconds",', '"micros\u00e9conds",', False),  # not ASCII: the whole text decodes otherwise
+    ('"microseconds",', '"micro\\qseconds",', False),  # a string with a problem the reader reports
+    ("MajRev = 1;", "MajRev = 1; MinRev = 1;", False),  # another statement on the entry's last line
+    ("MajRev = 1;", "MajRev = {1};", False),  # braces: read by Lark
+    ("$ It uses every basic", "$ It uses each basic", False),  # a comment outside the entries
+]
+
+
+@pytest.mark.parametrize(("find", "replace", "reread"), EDITS)
+def test_an_edit_inside_one_entry_reads_only_that_entry_and_answers_as_a_fresh_analysis(find, replace, reread):
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    assert find in EXAMPLE
+    text = EXAMPLE.replace(find, replace, 1)
+    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert carried.reread == reread
+    assert carried.read == 1 or not reread
+    back = analyse(EXAMPLE, carried=carried)  # and back again
+    assert answers(back) == answers(analyse(EXAMPLE))
+
+
+def test_a_keystroke_in_a_dense_section_reads_only_its_entry():
+    line = "$ parameter {0}\nParam{0} = 0,,,0x0000,0xC7,2,\"P{0}\",\"\",\"\",0,100,{0};   $ the {0}th\n"
+    text = "[File]\nDescText = \"x\";\n[Params]\n" + "".join(line.format(n) for n in range(1, 2001))
+    carried = Carried()
+    analyse(text, carried=carried)
+    for typed in "12345":  # a value one character longer each time: the entries after it move
+        text = text.replace('"P1000"', f'"P1000{typed}"') if typed == "1" else text.replace(
+            f'"P1000{int(typed) - 1}"', f'"P1000{typed}"')
+        assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+        assert carried.reread and carried.read == 1
+    # an edit of a leading comment is read whole; every entry but the one it leads is the one read before
+    text = text.replace("$ parameter 1500\n", "$ parameter 1500!\n")
+    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert not carried.reread and carried.reused == 2000

@@ -97,8 +97,7 @@ def _parse(source: str | bytes, filename: str | None, read) -> EdsFile:
     if decoded.first_non_ascii_line is not None:
         eds.diagnostics.append(Diagnostic.of(
             NOT_ASCII, _not_ascii_message(decoded), decoded.first_non_ascii_line, 1, filename))
-    head = text[:_SNIFF_LENGTH]
-    if not _CIP_FILE_SECTION.search(head) and _CANOPEN_SECTION.search(head):
+    if _canopen(text):
         builder.report(CANOPEN_EDS, "this is a CANopen EDS (CiA 306: [FileInfo], [DeviceInfo], object "
                        "sections such as [1000]); edsconv reads CIP EDS files (ISO 15745-4 Annex C.4)", 0)
         return eds
@@ -107,6 +106,41 @@ def _parse(source: str | bytes, filename: str | None, read) -> EdsFile:
     if not eds.sections and not eds.has_errors:
         eds.diagnostics.append(Diagnostic.of(NO_SECTIONS, "the file holds no [Section]", 1, 1, filename))
     return eds
+
+
+def _canopen(text: str) -> bool:
+    """Whether the start of ``text`` says it is a CANopen EDS (and not a CIP one)."""
+    head = text[:_SNIFF_LENGTH]
+    return not _CIP_FILE_SECTION.search(head) and _CANOPEN_SECTION.search(head) is not None
+
+
+def read_statement_by_statement(text: str) -> bool:
+    """Whether :func:`parse` reads the ASCII ``text`` statement by statement: it refuses it not, nor
+    takes it for a CANopen EDS."""
+    return refusal(text.encode("ascii")) is None and not _canopen(text)
+
+
+def simple_entry_at(text: str, offset: int) -> tuple[str, int, int] | None:
+    """``(keyword, body start, end)`` of the entry that starts at ``offset`` when the reader, coming to
+    it, reads it as a simple statement and reports nothing in it (:func:`_read_simple_statements`);
+    None when it does not (an entry with braces, a syntax error, a string with a problem)."""
+    lex = lexicon()
+    head = lex.statement_start.match(text, offset)
+    if head is None or head.start("entry") != offset:
+        return None
+    end = _simple_entry_end(text, head.end(), lex.item.fullmatch, set())
+    if end < 0:
+        statement = lex.statement.match(text, offset)
+        if statement is None or statement.start("entry") != offset:
+            return None
+        end = statement.end()
+        run_start, run_end = statement.span("run")
+        if run_start >= 0 and (text.find("\\", run_start, run_end) != -1 or text.find('L"', run_start, run_end) != -1):
+            problems: list[object] = []
+            check_strings(text, run_start, run_end, lambda *problem: problems.append(problem))
+            if problems:
+                return None
+    return entry_keyword(head.group("entry")), head.end(), end
 
 
 def _read(builder: SyntaxBuilder) -> None:

@@ -111,6 +111,17 @@ class LineIndex:
             self._starts.extend(map(re.Match.end, _LINE_START.finditer(self.text)))
         return self._starts
 
+    def edited(self, text: str, at: int, shift: int) -> LineIndex:
+        """The index of ``text``, which an edit at offset ``at`` of this index's text made without breaking
+        or joining a line: the lines after ``at`` start ``shift`` characters later, the others where they did."""
+        starts = self._line_starts()
+        index = LineIndex(text)
+        if shift:
+            line = bisect.bisect_right(starts, at)
+            starts = starts[:line] + array("q", [start + shift for start in starts[line:]])
+        index._starts = starts  # never changed once made: shared when nothing moved
+        return index
+
     def position(self, offset: int) -> tuple[int, int]:
         starts = self._line_starts()
         line = bisect.bisect_right(starts, offset)

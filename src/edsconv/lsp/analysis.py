@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 import edsconv
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.syntax import EdsFile, Entry
-from edsconv.lsp.incremental import Carried, reuse_entries
+from edsconv.lsp.incremental import Carried, reread, reuse_entries
 from edsconv.model import Device
 from edsconv.model.references import Occurrence, definitions, occurrences
 from edsconv.suppress import Directives, directive_comments
@@ -95,14 +95,15 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
             raise Superseded
 
     step()
-    lines = split_lines(text)
-    eds = edsconv.parse(text, path)
+    spliced = reread(carried, text) if carried is not None else None
+    lines, eds = spliced or (split_lines(text), edsconv.parse(text, path))
     step()
     with paused_gc():
         try:
             memo = None
             if carried is not None:
-                reuse_entries(carried, text, len(lines), eds)
+                if spliced is None:
+                    reuse_entries(carried, text, lines, eds)
                 memo = carried.memo
                 memo.start()
             device = build(eds, memo)

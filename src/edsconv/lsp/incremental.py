@@ -1,10 +1,15 @@
 """The analysis of a document's new text re-uses what did not change since its last text.
 
-A keystroke changes one entry of thousands. The new text is read whole (the reader is the
-fastest step), then every entry whose lines the edit did not touch is replaced by the very
-same :class:`~edsconv.eds.syntax.Entry` object of the last analysis: its fields are made
-already, and the model (:class:`~edsconv.model.memo.EntryMemo`) and the checks
-(:class:`~edsconv.checks.CheckMemo`) find the records and diagnostics they made from it.
+A keystroke changes one entry of thousands. When it typed or deleted characters inside the
+fields of one entry (no line break, nothing outside printable ASCII) and the reader reads the
+new entry as a simple statement ending where the old one ended, only that entry is read
+again (:func:`reread`): the new syntax model is the last one with that entry replaced, and
+the lines and line index are the last ones with that line replaced. Any other edit reads the
+new text whole, then every entry whose lines the edit did not touch is replaced by the very
+same :class:`~edsconv.eds.syntax.Entry` object of the last analysis (:func:`reuse_entries`).
+Either way the model (:class:`~edsconv.model.memo.EntryMemo`) and the checks
+(:class:`~edsconv.checks.CheckMemo`) find the records and diagnostics they made from the
+entries they saw before.
 
 An entry is the same when the text from its first leading comment to the end of its last
 line lies wholly before or wholly after the changed lines, and the new reading found an
@@ -18,11 +23,19 @@ re-used entries still point into.
 
 from __future__ import annotations
 
+import bisect
+import dataclasses
 import re
 from dataclasses import dataclass, field
+from itertools import islice
 
 from edsconv.checks import CheckMemo
-from edsconv.eds.syntax import EdsFile, Entry
+from edsconv.diagnostics import Diagnostic
+from edsconv.eds.reader import read_statement_by_statement, simple_entry_at
+from edsconv.eds.reader_rules import DUPLICATE_ENTRY, ENTRY_OUTSIDE_SECTION
+from edsconv.eds.runs import comments_in
+from edsconv.eds.source import LineIndex
+from edsconv.eds.syntax import EdsFile, Entry, Section
 from edsconv.model.memo import EntryMemo
 
 #: Incremental analyses between two from scratch: each keeps alive, at most, the text of one entry's
@@ -31,12 +44,20 @@ FULL_READ_EVERY = 16
 #: Characters compared at a time when looking for where two texts start and stop differing
 _CHUNK = 1 << 16
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
+#: What an edit re-read as one entry may have typed or deleted: characters that neither break a line
+#: nor change how the text is decoded
+_INSIDE_A_LINE = re.compile(r"[\x20-\x7e\t]*")
+#: The rest of an entry's last line when no other statement stands on it: blanks, perhaps a comment
+_REST_OF_LINE = re.compile(r"[ \t\f\v\x1a]*+(?:\$[^\n]*+)?(?:\n|\Z)")
+#: Diagnostics the reader gives an entry at its start whatever its fields say
+_ABOUT_THE_KEYWORD = frozenset({DUPLICATE_ENTRY.code, ENTRY_OUTSIDE_SECTION.code})
 
 
 #: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
-#: older text it was first read from): the entry, just after its ``;``, and where its first leading
-#: comment starts (else where it starts)
-Place = tuple[Entry, int, int]
+#: older text it was first read from): the entry, just after its ``;``, where its first leading
+#: comment starts (else where it starts), its section's number (the preamble first, if any) and its
+#: index among the section's entries
+Place = tuple[Entry, int, int, int, int]
 
 
 @dataclass(slots=True)
@@ -45,8 +66,14 @@ class Carried:
 
     text: str = ""
     line_count: int = -1
-    #: every entry of ``text`` by its offset in ``text``
+    #: every entry of ``text`` by its offset in ``text``, in file order
     places: dict[int, Place] = field(default_factory=dict)
+    #: the offsets of ``places``, in file order
+    starts: list[int] = field(default_factory=list)
+    #: the syntax model of ``text``, and its lines and line index
+    eds: EdsFile | None = None
+    lines: tuple[str, ...] = ()
+    index: LineIndex | None = None
     #: what was made from the entries (records, comments, the places naming other entries)
     memo: EntryMemo = field(default_factory=EntryMemo)
     #: what the checks said of the entries and records (blocks of them)
@@ -56,23 +83,30 @@ class Carried:
     #: entries re-used by the last analysis, and entries read anew (for the tests and benchmarks)
     reused: int = 0
     read: int = 0
+    #: whether the last analysis read only the entry the edit changed (:func:`reread`)
+    reread: bool = False
+
+    def keep(self, text: str, lines: tuple[str, ...], eds: EdsFile, index: LineIndex | None, reread: bool) -> None:
+        """Describe ``text`` from now on (``places`` already does)."""
+        self.text, self.line_count, self.lines, self.eds, self.index = text, len(lines), lines, eds, index
+        self.starts, self.reread = list(self.places), reread
 
 
-def reuse_entries(carried: Carried, text: str, line_count: int, eds: EdsFile) -> None:
-    """Put the last analysis's entry objects into ``eds`` (just read from ``text``) wherever the edit
-    left an entry as it was; then make ``carried`` describe ``text``.
+def reuse_entries(carried: Carried, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
+    """Put the last analysis's entry objects into ``eds`` (just read whole from ``text``, of ``lines``)
+    wherever the edit left an entry as it was; then make ``carried`` describe ``text``.
 
     An entry wholly before the changed lines stands at the same offset in both texts, one wholly
     after them ``shift`` characters later. This loop runs once per entry of the file: keep it lean.
     """
     start = end = shift = 0
-    reusing = carried.line_count == line_count and carried.steps < FULL_READ_EVERY
+    reusing = carried.line_count == len(lines) and carried.steps < FULL_READ_EVERY
     if reusing:
         start, end, shift = changed_lines(carried.text, text)
     known = carried.places
     places: dict[int, Place] = {}
     reused = 0
-    for section in (*([eds.preamble] if eds.preamble else []), *eds.sections):
+    for number, section in enumerate(_numbered(eds)):
         entries = section.entries
         for index, entry in enumerate(entries):
             offset, entry_end, lead = entry.offset, entry.end_offset, entry.lead_offset
@@ -82,19 +116,118 @@ def reuse_entries(carried: Carried, text: str, line_count: int, eds: EdsFile) ->
                     and old_offset - old[2] == offset - lead:
                 entries[index] = entry = old[0]
                 reused += 1
-            places[offset] = (entry, entry_end, lead)
+            places[offset] = (entry, entry_end, lead, number, index)
     carried.steps = carried.steps + 1 if reusing else 0
-    carried.text, carried.line_count, carried.places = text, line_count, places
+    carried.places = places
     carried.reused, carried.read = reused, len(places) - reused
+    carried.keep(text, lines, eds, index_of(eds), False)
+
+
+def reread(carried: Carried, text: str) -> tuple[tuple[str, ...], EdsFile] | None:
+    """The lines and syntax model of ``text``, made from those of the last text by reading again the one
+    entry the edit changed; None when the edit did more than change that entry's fields (see the module).
+
+    Exact because the reader, coming to that entry's start in ``text``, reads it as it does here, and
+    then finds the text after it as it was; its other entries keep their places and lines.
+    """
+    eds, index, old = carried.eds, carried.index, carried.text
+    if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
+            or eds.newline != "\n" or len(text) == len(old) and text == old:
+        return None
+    start, old_end, new_end = changed_span(old, text)
+    if not (_INSIDE_A_LINE.fullmatch(old, start, old_end) and _INSIDE_A_LINE.fullmatch(text, start, new_end)):
+        return None
+    at = bisect.bisect_right(carried.starts, start) - 1
+    if at < 0:
+        return None
+    offset = carried.starts[at]
+    entry, end, lead, number, position = carried.places[offset]
+    shift = len(text) - len(old)
+    read = simple_entry_at(text, offset)
+    if read is None:
+        return None
+    keyword, body, entry_end = read
+    rest = _REST_OF_LINE.match(text, entry_end)
+    if keyword != entry.keyword or start < body or new_end > entry_end or entry_end != end + shift or rest is None \
+            or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(text):
+        return None
+    new_index = index.edited(text, start, shift)
+    spliced = Entry.unread(keyword, offset, entry_end, new_index)
+    if entry.lead_offset != entry.offset:
+        spliced.leading_comments = list(entry.leading_comments)
+    for comment in comments_in(text, entry_end, rest.end(), new_index):
+        spliced.attach_trailing_comment(comment)
+    line = new_index.position(start)[0] - 1
+    line_start = text.rfind("\n", 0, start) + 1
+    lines = (*carried.lines[:line], text[line_start:line_start + len(carried.lines[line]) + shift],
+             *carried.lines[line + 1:])
+    carried.places = _moved(carried.places, at, (spliced, entry_end, lead, number, position), shift)
+    carried.steps += 1
+    carried.reused, carried.read = len(carried.places) - 1, 1
+    edited = _with_entry(eds, number, position, spliced)
+    carried.keep(text, lines, edited, new_index, True)
+    return lines, edited
+
+
+def _quiet(diagnostics: list[Diagnostic], entry: Entry) -> bool:
+    """Whether the reader said nothing of ``entry``'s fields and of the rest of its last line."""
+    first = (entry.line, entry.column)
+    last_line = entry.source.position(entry.end_offset)[0] if entry.source else 0
+    return not any(first <= (d.line, d.column) and d.line <= last_line
+                   and not ((d.line, d.column) == first and d.code in _ABOUT_THE_KEYWORD) for d in diagnostics)
+
+
+def _moved(places: dict[int, Place], at: int, place: Place, shift: int) -> dict[int, Place]:
+    """``places`` with the ``at``-th replaced by ``place`` and the ones after it ``shift`` characters later."""
+    items = iter(places.items())
+    moved = dict(islice(items, at))
+    moved[place[0].offset] = place
+    next(items)
+    if not shift:
+        moved.update(items)
+        return moved
+    for offset, (entry, end, lead, number, position) in items:
+        moved[offset + shift] = (entry, end + shift, lead + shift, number, position)
+    return moved
+
+
+def _numbered(eds: EdsFile) -> list[Section]:
+    """The sections that hold entries, numbered as :data:`Place` numbers them."""
+    return [eds.preamble, *eds.sections] if eds.preamble else eds.sections
+
+
+def _with_entry(eds: EdsFile, number: int, position: int, entry: Entry) -> EdsFile:
+    """A copy of ``eds`` with ``entry`` in place of the ``position``-th entry of section ``number``;
+    ``eds`` is left as it was (an earlier analysis still answers from it)."""
+    section = _numbered(eds)[number]
+    entries = list(section.entries)
+    entries[position] = entry
+    replaced = dataclasses.replace(section, entries=entries)
+    if section is eds.preamble:
+        return dataclasses.replace(eds, preamble=replaced, diagnostics=list(eds.diagnostics))
+    sections = list(eds.sections)
+    sections[number - (eds.preamble is not None)] = replaced
+    return dataclasses.replace(eds, sections=sections, diagnostics=list(eds.diagnostics))
+
+
+def index_of(eds: EdsFile) -> LineIndex | None:
+    """The line index of the text ``eds`` was just read from whole (its sections share it)."""
+    first = eds.preamble or (eds.sections[0] if eds.sections else None)
+    return first.source if first is not None else None
+
+
+def changed_span(old: str, new: str) -> tuple[int, int, int]:
+    """``(start, old_end, new_end)``: ``old[start:old_end]`` became ``new[start:new_end]``, the rest is alike."""
+    start = _common_prefix(old, new)
+    suffix = _common_suffix(old, new, min(len(old), len(new)) - start)
+    return start, len(old) - suffix, len(new) - suffix
 
 
 def changed_lines(old: str, new: str) -> tuple[int, int, int]:
     """``(start, end, shift)``: the lines of ``new`` an edit of ``old`` touched, from the start of the
     first to just after the line break of the last (or the end), and ``len(new) - len(old)``:
     what stands after ``end`` stood ``shift`` characters earlier in ``old``."""
-    prefix = _common_prefix(old, new)
-    suffix = _common_suffix(old, new, min(len(old), len(new)) - prefix)
-    changed_end = max(len(new) - suffix, prefix)
+    prefix, _, changed_end = changed_span(old, new)
     start = max(new.rfind("\n", 0, prefix), new.rfind("\r", 0, prefix)) + 1
     line_break = _LINE_BREAK.search(new, changed_end)
     return start, line_break.end() if line_break else len(new), len(new) - len(old)

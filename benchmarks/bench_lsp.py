@@ -7,7 +7,7 @@ Drives ``edsconv lsp`` over stdio with pygls' own client, as an editor does.
 After a keystroke: the largest real file and a generated dense file
 (benchmarks/generate.py, default dense-params-40k.eds, 2.7 MB) are opened, then
 one character of a value is changed, N times; the time runs from the didChange
-notification to the publishDiagnostics that answers it, the pause the server
+notification (the change is made before) to the publishDiagnostics that answers it, the pause the server
 waits for typing to settle (CHANGE_DELAY) included. Hover and completion right
 after a change are timed from the didChange to the answer. "new line": the
 diagnostics after a blank line is typed at the top or deleted, an edit that moves

@@ -197,3 +197,22 @@ def test_a_keystroke_in_a_dense_section_reads_only_its_entry():
     text = text.replace("$ parameter 1500\n", "$ parameter 1500!\n")
     assert answers(analyse(text, carried=carried)) == answers(analyse(text))
     assert not carried.reread and carried.reused == 2000
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text("ab\n", max_size=40), st.text("ab", max_size=4), st.integers(0, 40), st.integers(0, 40),
+       st.sampled_from([2, 3, 1 << 16]))
+def test_changed_span_is_the_shortest_span_outside_the_common_prefix_and_suffix(base, typed, cut, resume, chunk):
+    from edsconv.lsp import incremental
+
+    old, new = base, base[:cut] + typed + base[max(cut, resume):]
+    prefix = next((i for i, (x, y) in enumerate(zip(old, new, strict=False)) if x != y), min(len(old), len(new)))
+    suffix = 0
+    while suffix < min(len(old), len(new)) - prefix and old[-1 - suffix] == new[-1 - suffix]:
+        suffix += 1
+    original = incremental._CHUNK
+    incremental._CHUNK = chunk  # small chunks: the chunked comparison and the halving both run
+    try:
+        assert incremental.changed_span(old, new) == (prefix, len(old) - suffix, len(new) - suffix)
+    finally:
+        incremental._CHUNK = original

@@ -250,5 +250,17 @@ def _common_prefix(a: str, b: str) -> int:
 
 
 def _common_suffix(a: str, b: str, limit: int) -> int:
-    """The length of the longest common suffix, at most ``limit`` (what the common prefix left)."""
-    return _common_prefix(a[::-1][:limit], b[::-1][:limit]) if limit > 0 else 0
+    """The length of the longest common suffix, at most ``limit`` (what the common prefix left): whole
+    chunks from the ends compared in C, then one chunk halved (slices, never reversed copies of the texts)."""
+    end_a, end_b = len(a), len(b)
+    low = 0
+    while low + _CHUNK <= limit and a[end_a - low - _CHUNK:end_a - low] == b[end_b - low - _CHUNK:end_b - low]:
+        low += _CHUNK
+    high = min(low + _CHUNK, limit)
+    while low < high:  # the last ``low`` characters agree; the first difference from the end is within ``high``
+        middle = (low + high + 1) // 2
+        if a[end_a - middle:end_a - low] == b[end_b - middle:end_b - low]:
+            low = middle
+        else:
+            high = middle - 1
+    return low

@@ -11,7 +11,7 @@ notification (the change is made before) to the publishDiagnostics that answers 
 waits for typing to settle (CHANGE_DELAY) included. Hover and completion right
 after a change are timed from the didChange to the answer. "new line": the
 diagnostics after a blank line is typed at the top or deleted, an edit that moves
-every line, which the server analyses from scratch (edsconv.lsp.incremental).
+every line, so the server re-uses nothing (edsconv.lsp.incremental): the worst case.
 Beside them, the time of one full re-check of the file in this process
 (``analyse``, warm, without what an earlier analysis left), which is what the
 server did per change before. Hover and definition: on every real

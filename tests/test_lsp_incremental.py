@@ -121,14 +121,22 @@ def test_a_keystroke_inside_a_value_reads_only_its_entry_and_builds_only_its_rec
     assert 0 < carried.checks.misses - checks_misses <= 15 < carried.checks.hits - checks_hits
 
 
-def test_a_new_line_and_every_sixteenth_edit_read_the_whole_text_again():
+def test_a_new_line_keeps_the_entries_before_it_and_every_sixteenth_edit_reads_the_whole_text_again():
     carried = Carried()
     analyse(EXAMPLE, carried=carried)
-    analyse(EXAMPLE.replace("ProdCode = 1001;", "ProdCode = 1001;\n"), carried=carried)
+    analyse("\n" + EXAMPLE, carried=carried)  # every line moved: nothing is re-used
     assert carried.reused == 0
+    analyse(EXAMPLE, carried=carried)
+    assert carried.reused == 0
+    line_break = EXAMPLE.replace("ProdCode = 1001;", "ProdCode = 1001;\n")
+    before = EXAMPLE[:EXAMPLE.index("ProdCode")].count(" = ")  # the entries before ProdCode's line
+    assert answers(analyse(line_break, carried=carried)) == answers(analyse(line_break))
+    assert carried.reused == before > 0
     text = EXAMPLE
-    analyse(text, carried=carried)  # a line fewer: read whole again
-    assert carried.reused == 0
+    analyse(text, carried=carried)  # a line fewer: again the entries before it
+    assert carried.reused == before
+    carried = Carried()
+    analyse(text, carried=carried)
     for step in range(FULL_READ_EVERY + 1):
         text = text.replace("MajRev = 1;", "MajRev = 1; ") if step % 2 else text.replace("MajRev = 1; ", "MajRev = 1;")
         analyse(text, carried=carried)

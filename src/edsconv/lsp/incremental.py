@@ -13,12 +13,12 @@ entries they saw before.
 
 An entry is the same when the text from its first leading comment to the end of its last
 line lies wholly before or wholly after the changed lines, and the new reading found an
-entry of the same keyword and length at the same place. Positions stay right because only
-edits that keep the number of lines are carried over: every other line keeps its number
-and its text, and a re-used entry reports the line and column of its own text. An edit
-that adds or removes a line (Enter, a deleted line, a paste) is analysed from scratch,
-as is every :data:`FULL_READ_EVERY`-th edit, which lets go of the older texts that
-re-used entries still point into.
+entry of the same keyword and length at the same place. Positions stay right: a re-used
+entry reports the line and column of its own text, and its lines keep their numbers. After
+an edit that adds or removes a line (Enter, a deleted line, a paste) only the entries before
+it are re-used, since every line after it moves (and with it the positions the model and
+the checks recorded). Every :data:`FULL_READ_EVERY`-th edit is analysed from scratch, which
+lets go of the older texts that re-used entries still point into.
 """
 
 from __future__ import annotations
@@ -100,9 +100,11 @@ def reuse_entries(carried: Carried, text: str, lines: tuple[str, ...], eds: EdsF
     after them ``shift`` characters later. This loop runs once per entry of the file: keep it lean.
     """
     start = end = shift = 0
-    reusing = carried.line_count == len(lines) and carried.steps < FULL_READ_EVERY
+    reusing = carried.line_count >= 0 and carried.steps < FULL_READ_EVERY
     if reusing:
         start, end, shift = changed_lines(carried.text, text)
+        if carried.line_count != len(lines):
+            end = len(text) + 1  # every line after the edit moved: only the entries before it are the same
     known = carried.places
     places: dict[int, Place] = {}
     reused = 0

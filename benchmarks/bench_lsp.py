@@ -94,7 +94,7 @@ def one_character_change(uri: str, text: str, version: int) -> types.DidChangeTe
 
 def line_break_change(uri: str, version: int, typed: bool) -> types.DidChangeTextDocumentParams:
     """A blank line typed at the top of the file (``typed``) or deleted again: an edit that moves
-    every line, which the server analyses from scratch (edsconv.lsp.incremental)."""
+    every line, so that the server re-uses no entry (edsconv.lsp.incremental)."""
     at = types.Position(0, 0)
     where = types.Range(at, at if typed else types.Position(1, 0))
     return types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version=version, uri=uri),

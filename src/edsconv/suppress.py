@@ -193,8 +193,7 @@ def directive_comments(eds: EdsFile, memo: EntryMemo | None = None) -> Directive
 def _comment_groups(eds: EdsFile, memo: EntryMemo | None = None) \
         -> Iterator[tuple[list[Comment], Section | Entry | Unparsed | None]]:
     """Each node's comments, with the node (None for the comments after the last statement)."""
-    sections: list[Section] = [*([eds.preamble] if eds.preamble else []), *eds.sections]
-    for section in sections:
+    for section in eds.holders():
         yield [*section.leading_comments, *section.comments], section
         for entry in section.entries:
             if memo is None:

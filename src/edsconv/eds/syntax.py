@@ -420,6 +420,11 @@ class EdsFile:
     encoding: str = field(default="ascii", compare=False)
     newline: str = field(default="\n", compare=False)
 
+    def holders(self) -> list[Section]:
+        """The sections that hold entries, in file order: the preamble (entries before the first header,
+        an error, kept) if there is one, then every section."""
+        return [self.preamble, *self.sections] if self.preamble is not None else self.sections
+
     def section(self, name: str) -> Section | None:
         """The first section with this name (case as written in the spec)."""
         for section in self.sections:

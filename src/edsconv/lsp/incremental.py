@@ -35,7 +35,7 @@ from edsconv.eds.reader import read_statement_by_statement, simple_entry_at
 from edsconv.eds.reader_rules import DUPLICATE_ENTRY, ENTRY_OUTSIDE_SECTION
 from edsconv.eds.runs import comments_in
 from edsconv.eds.source import LineIndex
-from edsconv.eds.syntax import EdsFile, Entry, Section
+from edsconv.eds.syntax import EdsFile, Entry
 from edsconv.model.memo import EntryMemo
 
 #: Incremental analyses between two from scratch: each keeps alive, at most, the text of one entry's
@@ -55,7 +55,7 @@ _ABOUT_THE_KEYWORD = frozenset({DUPLICATE_ENTRY.code, ENTRY_OUTSIDE_SECTION.code
 
 #: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
 #: older text it was first read from): the entry, just after its ``;``, where its first leading
-#: comment starts (else where it starts), its section's number (the preamble first, if any) and its
+#: comment starts (else where it starts), its section's index in :meth:`EdsFile.holders` and its
 #: index among the section's entries
 Place = tuple[Entry, int, int, int, int]
 
@@ -108,7 +108,7 @@ def reuse_entries(carried: Carried, text: str, lines: tuple[str, ...], eds: EdsF
     known = carried.places
     places: dict[int, Place] = {}
     reused = 0
-    for number, section in enumerate(_numbered(eds)):
+    for number, section in enumerate(eds.holders()):
         entries = section.entries
         for index, entry in enumerate(entries):
             offset, entry_end, lead = entry.offset, entry.end_offset, entry.lead_offset
@@ -161,8 +161,8 @@ def reread(carried: Carried, text: str) -> tuple[tuple[str, ...], EdsFile] | Non
         spliced.attach_trailing_comment(comment)
     line = new_index.position(start)[0] - 1
     line_start = text.rfind("\n", 0, start) + 1
-    lines = (*carried.lines[:line], text[line_start:line_start + len(carried.lines[line]) + shift],
-             *carried.lines[line + 1:])
+    lines = carried.lines[:line] + (text[line_start:line_start + len(carried.lines[line]) + shift],) \
+        + carried.lines[line + 1:]
     carried.places = _moved(carried.places, at, (spliced, entry_end, lead, number, position), shift)
     carried.steps += 1
     carried.reused, carried.read = len(carried.places) - 1, 1
@@ -193,15 +193,10 @@ def _moved(places: dict[int, Place], at: int, place: Place, shift: int) -> dict[
     return moved
 
 
-def _numbered(eds: EdsFile) -> list[Section]:
-    """The sections that hold entries, numbered as :data:`Place` numbers them."""
-    return [eds.preamble, *eds.sections] if eds.preamble else eds.sections
-
-
 def _with_entry(eds: EdsFile, number: int, position: int, entry: Entry) -> EdsFile:
     """A copy of ``eds`` with ``entry`` in place of the ``position``-th entry of section ``number``;
     ``eds`` is left as it was (an earlier analysis still answers from it)."""
-    section = _numbered(eds)[number]
+    section = eds.holders()[number]
     entries = list(section.entries)
     entries[position] = entry
     replaced = dataclasses.replace(section, entries=entries)
@@ -214,8 +209,8 @@ def _with_entry(eds: EdsFile, number: int, position: int, entry: Entry) -> EdsFi
 
 def index_of(eds: EdsFile) -> LineIndex | None:
     """The line index of the text ``eds`` was just read from whole (its sections share it)."""
-    first = eds.preamble or (eds.sections[0] if eds.sections else None)
-    return first.source if first is not None else None
+    holders = eds.holders()
+    return holders[0].source if holders else None
 
 
 def changed_span(old: str, new: str) -> tuple[int, int, int]:

@@ -5,6 +5,7 @@ only the entry it touched."""
 from __future__ import annotations
 
 import random
+import re
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -224,3 +225,15 @@ def test_changed_span_is_the_shortest_span_outside_the_common_prefix_and_suffix(
         assert incremental.changed_span(old, new) == (prefix, len(old) - suffix, len(new) - suffix)
     finally:
         incremental._CHUNK = original
+
+
+def test_a_suppression_typed_into_an_entry_of_a_file_that_never_named_edsconv_is_found():
+    text = re.sub("edsconv", "this tool", EXAMPLE.replace("   $ edsconv: ignore[EDS103]", ""), flags=re.IGNORECASE)
+    assert "edsconv" not in text.lower()
+    carried = Carried()
+    analyse(text, carried=carried)
+    typed = text.replace("$ Data Type: UDINT", "$ edsconv: ignore[EDS321]", 1)
+    incremental = analyse(typed, carried=carried)
+    assert carried.reread
+    assert answers(incremental) == answers(analyse(typed))
+    assert [c.text for c, _ in incremental.directives or []] == [" edsconv: ignore[EDS321]"]

@@ -127,14 +127,18 @@ def apply_suppressions(eds: EdsFile, diagnostics: Iterable[Diagnostic], reports:
     return remaining + malformed
 
 
-def _mentions_edsconv(eds: EdsFile) -> bool:
-    """False when the text the file was read from never says "edsconv": then no comment holds a
-    directive, and walking every field's comments (a third of the language server's work per
+def _mentions_edsconv(eds: EdsFile, text: str | None) -> bool:
+    """False when ``text``, else the text the file was read from, never says "edsconv": then no comment
+    holds a directive, and walking every field's comments (a third of the language server's work per
     keystroke on a large file) is skipped. A file built in code has no text: its comments are walked."""
-    read_from = next((s.source for s in (eds.preamble, *eds.sections) if s is not None and s.source), None)
+    if text is None:
+        read_from = next((s.source for s in eds.holders() if s.source), None)
+        if read_from is None:
+            return True
+        text = read_from.text
     # every directive, and every attempt at one, names edsconv (SUPPRESSION, _DIRECTIVE_LIKE); lower()
     # and find are ten times faster than a case-blind regular expression on a large text
-    return read_from is None or "edsconv" in read_from.text.lower()
+    return "edsconv" in text.lower()
 
 
 def _malformed(comments: Directives, path: str | None) -> Iterator[Diagnostic]:
@@ -171,14 +175,16 @@ def _unused(suppression: Suppression, path: str | None) -> Diagnostic:
                          suppression.line, suppression.end_column)
 
 
-def directive_comments(eds: EdsFile, memo: EntryMemo | None = None) -> Directives:
+def directive_comments(eds: EdsFile, memo: EntryMemo | None = None, text: str | None = None) -> Directives:
     """Every comment that names edsconv (as every directive, and every attempt at one, does), with the
     lines a suppression in it covers (an entry's, a header's line, or (0, 0) after the last statement).
 
     With a ``memo`` (the language server's, :mod:`edsconv.model.memo`), an entry it knows is not
-    walked again: on a file of 40,000 entries that walk takes a tenth of a second.
+    walked again: on a file of 40,000 entries that walk takes a tenth of a second. ``text`` is the
+    text ``eds`` stands for, when the caller holds it: the language server's syntax model keeps
+    sections and entries read from older texts (:mod:`edsconv.lsp.incremental`).
     """
-    if not _mentions_edsconv(eds):
+    if not _mentions_edsconv(eds, text):
         return []
     found: Directives = []
     for comments, node in _comment_groups(eds, memo):

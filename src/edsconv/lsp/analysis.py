@@ -123,7 +123,7 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
                 diagnostics += check.run(context)
             if checks is not None:
                 checks.finish()
-            analysis.directives = directive_comments(eds, memo)
+            analysis.directives = directive_comments(eds, memo, text)
             if memo is not None:
                 memo.finish()
         except Superseded:

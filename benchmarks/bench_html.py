@@ -5,9 +5,10 @@
 Inputs: the largest file of the real corpus (when ../shared/corpus/real is there) and two
 generated dense files (generate.py): ``dense-params-40k.eds`` (2.7 MB, the dense file of the
 language server's and the reader's benchmarks: 40,000 parameters) and ``dense-mixed-3mb.eds``
-(20,000 parameters, 10,000 assemblies, 6,000 connections). Each command runs in this process, as ``run_all.py``'s steps do, its output
-discarded (the page written to a temporary file, as ``-o`` does); each figure is the best of N
-runs, text and page alternating so that both see the same load. Goals: the page under 2x the
+(20,000 parameters, 10,000 assemblies, 6,000 connections). Each command runs in this process,
+as ``run_all.py``'s steps do, its output discarded (the page written to a temporary file, as
+``-o`` does); each figure is the best of N runs, text and page alternating so that both see the
+same load. Goals: the page under 2x the
 text's time and under 3x the EDS's size. Then the size ratio over the whole real corpus (median, max).
 """
 

@@ -237,3 +237,52 @@ def test_a_suppression_typed_into_an_entry_of_a_file_that_never_named_edsconv_is
     assert carried.reread
     assert answers(incremental) == answers(analyse(typed))
     assert [c.text for c, _ in incremental.directives or []] == [" edsconv: ignore[EDS321]"]
+
+
+@pytest.mark.parametrize(("name", "variant"), [
+    ("CR LF line ends", EXAMPLE.replace("\n", "\r\n")),
+    ("CR line ends", EXAMPLE.replace("\n", "\r")),
+    ("a byte order mark", "\ufeff" + EXAMPLE),
+])
+def test_edits_of_a_text_the_reader_normalises_answer_as_a_fresh_analysis(name, variant):
+    # the reader counts offsets in the text without its byte order mark and with "\n" line ends:
+    # a comment on an entry's last line, 40 lines down, is where the two counts part most visibly
+    carried = Carried()
+    analyse(variant, carried=carried)
+    text = variant.replace("$ decimal places", "$ decimal placez", 1)
+    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert_incremental_is_exact(variant, 3, 25)
+    assert_incremental_is_exact(variant, 4, 25, inside_a_line=False)
+
+
+def test_a_byte_order_mark_typed_at_the_start_is_read_whole():
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    assert answers(analyse("\ufeff" + EXAMPLE, carried=carried)) == answers(analyse("\ufeff" + EXAMPLE))
+    assert not carried.reread
+
+
+def real_files() -> list:
+    return sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
+
+
+@pytest.mark.real_corpus
+@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@pytest.mark.parametrize("index", range(len(real_files())))
+def test_edits_of_every_real_file_answer_as_a_fresh_analysis(index):
+    # line ends, encodings and layouts as the vendors wrote them (CR LF files found the reader's
+    # offsets counted apart from the editor's); `python tests/test_lsp_incremental.py SEED EDITS`
+    # runs more of these edits on every file
+    text = real_files()[index].read_bytes().decode("latin-1")
+    carried = assert_incremental_is_exact(text, index, 3)
+    assert_incremental_is_exact(text, index, 2, inside_a_line=False)
+    assert carried.steps == 3
+
+
+if __name__ == "__main__":  # the long run the test above samples: seed, then edits per file
+    import sys
+
+    seed, edits = (int(argument) for argument in sys.argv[1:3])
+    for number, path in enumerate(real_files()):
+        assert_incremental_is_exact(path.read_bytes().decode("latin-1"), seed * 1000 + number, edits)
+        print(f"{path.name}: {edits} edits answer as fresh analyses")

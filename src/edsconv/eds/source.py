@@ -80,8 +80,19 @@ def _with_newlines(text: str, encoding: str, first_line: int | None) -> DecodedS
     crlf = text.find("\r")
     if crlf != -1:
         newline = "\r\n" if text.startswith("\r\n", crlf) else "\r"
-        text = text.replace("\r\n", "\n").replace("\r", "\n")
+        text = _with_line_feeds(text)
     return DecodedSource(text, encoding, newline, first_line)
+
+
+def _with_line_feeds(text: str) -> str:
+    return text.replace("\r\n", "\n").replace("\r", "\n")
+
+
+def as_read(text: str) -> str:
+    """The text the reader makes of ``text`` (characters, as an editor holds them) and counts its
+    offsets in: without a byte order mark, every line end ``\n`` (:func:`decode`)."""
+    text = text.removeprefix("\ufeff")
+    return _with_line_feeds(text) if "\r" in text else text
 
 
 def encode(text: str, encoding: str) -> bytes:

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 import edsconv
 from edsconv.diagnostics import Diagnostic
+from edsconv.eds.source import as_read
 from edsconv.eds.syntax import EdsFile, Entry
 from edsconv.lsp.incremental import Carried, reread, reuse_entries
 from edsconv.model import Device
@@ -102,8 +103,8 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
         try:
             memo = None
             if carried is not None:
-                if spliced is None:
-                    reuse_entries(carried, text, lines, eds)
+                if spliced is None:  # in the text the syntax model's offsets count
+                    reuse_entries(carried, as_read(text), lines, eds)
                 memo = carried.memo
                 memo.start()
             device = build(eds, memo)

@@ -93,8 +93,9 @@ class Carried:
 
 
 def reuse_entries(carried: Carried, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
-    """Put the last analysis's entry objects into ``eds`` (just read whole from ``text``, of ``lines``)
-    wherever the edit left an entry as it was; then make ``carried`` describe ``text``.
+    """Put the last analysis's entry objects into ``eds`` (just read whole, and ``text`` as the reader
+    made it: :func:`edsconv.eds.source.as_read`; ``lines`` as the editor counts them) wherever the edit
+    left an entry as it was; then make ``carried`` describe ``text``.
 
     An entry wholly before the changed lines stands at the same offset in both texts, one wholly
     after them ``shift`` characters later. This loop runs once per entry of the file: keep it lean.
@@ -130,7 +131,9 @@ def reread(carried: Carried, text: str) -> tuple[tuple[str, ...], EdsFile] | Non
     entry the edit changed; None when the edit did more than change that entry's fields (see the module).
 
     Exact because the reader, coming to that entry's start in ``text``, reads it as it does here, and
-    then finds the text after it as it was; its other entries keep their places and lines.
+    then finds the text after it as it was; its other entries keep their places and lines. The last
+    text was ASCII with ``\n`` line ends and the edit typed nothing else, so ``text`` is the text the
+    reader makes of it (:func:`edsconv.eds.source.as_read`).
     """
     eds, index, old = carried.eds, carried.index, carried.text
     if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \

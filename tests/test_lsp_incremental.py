@@ -251,6 +251,10 @@ def test_edits_of_a_text_the_reader_normalises_answer_as_a_fresh_analysis(name, 
     analyse(variant, carried=carried)
     text = variant.replace("$ decimal places", "$ decimal placez", 1)
     assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    # inside an entry: that entry alone is read again, unless a byte order mark makes the text not ASCII
+    text = text.replace("$ Data Type: UDINT", "$ Data Type: UINT", 1)
+    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert carried.reread == (not variant.startswith("\ufeff"))
     assert_incremental_is_exact(variant, 3, 25)
     assert_incremental_is_exact(variant, 4, 25, inside_a_line=False)
 
@@ -275,7 +279,7 @@ def test_edits_of_every_real_file_answer_as_a_fresh_analysis(index):
     # runs more of these edits on every file
     text = real_files()[index].read_bytes().decode("latin-1")
     carried = assert_incremental_is_exact(text, index, 3)
-    assert_incremental_is_exact(text, index, 2, inside_a_line=False)
+    assert_incremental_is_exact(text, index, 1, inside_a_line=False)
     assert carried.steps == 3
 
 

@@ -114,10 +114,10 @@ def _canopen(text: str) -> bool:
     return not _CIP_FILE_SECTION.search(head) and _CANOPEN_SECTION.search(head) is not None
 
 
-def read_statement_by_statement(text: str) -> bool:
-    """Whether :func:`parse` reads the ASCII ``text`` statement by statement: it refuses it not, nor
-    takes it for a CANopen EDS."""
-    return refusal(text.encode("ascii")) is None and not _canopen(text)
+def read_statement_by_statement(raw: str, text: str) -> bool:
+    """Whether :func:`parse` reads the ASCII ``raw`` statement by statement: it refuses it not, nor
+    takes ``text``, what it decodes ``raw`` to, for a CANopen EDS."""
+    return refusal(raw.encode("ascii")) is None and not _canopen(text)
 
 
 def simple_entry_at(text: str, offset: int) -> tuple[str, int, int] | None:

@@ -103,8 +103,8 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
         try:
             memo = None
             if carried is not None:
-                if spliced is None:  # in the text the syntax model's offsets count
-                    reuse_entries(carried, as_read(text), lines, eds)
+                if spliced is None:
+                    reuse_entries(carried, text, as_read(text), lines, eds)
                 memo = carried.memo
                 memo.start()
             device = build(eds, memo)

@@ -1,7 +1,8 @@
 """The analysis of a document's new text re-uses what did not change since its last text.
 
 A keystroke changes one entry of thousands. When it typed or deleted characters inside the
-fields of one entry (no line break, nothing outside printable ASCII) and the reader reads the
+fields of one entry of an ASCII text (no line break, nothing outside printable ASCII; any line
+ends, which the reader's offsets count as one character each) and the reader reads the
 new entry as a simple statement ending where the old one ended, only that entry is read
 again (:func:`reread`): the new syntax model is the last one with that entry replaced, and
 the lines and line index are the last ones with that line replaced. Any other edit reads the
@@ -64,6 +65,8 @@ Place = tuple[Entry, int, int, int, int]
 class Carried:
     """What the analyses of one document hand from one text to the next."""
 
+    #: the text as the editor holds it, and as the reader made it (:func:`edsconv.eds.source.as_read`)
+    raw: str = ""
     text: str = ""
     line_count: int = -1
     #: every entry of ``text`` by its offset in ``text``, in file order
@@ -86,16 +89,17 @@ class Carried:
     #: whether the last analysis read only the entry the edit changed (:func:`reread`)
     reread: bool = False
 
-    def keep(self, text: str, lines: tuple[str, ...], eds: EdsFile, index: LineIndex | None, reread: bool) -> None:
-        """Describe ``text`` from now on (``places`` already does)."""
-        self.text, self.line_count, self.lines, self.eds, self.index = text, len(lines), lines, eds, index
-        self.starts, self.reread = list(self.places), reread
+    def keep(self, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile, index: LineIndex | None,
+             reread: bool) -> None:
+        """Describe ``raw`` (read as ``text``) from now on (``places`` already does)."""
+        self.raw, self.text, self.line_count, self.lines = raw, text, len(lines), lines
+        self.eds, self.index, self.starts, self.reread = eds, index, list(self.places), reread
 
 
-def reuse_entries(carried: Carried, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
-    """Put the last analysis's entry objects into ``eds`` (just read whole, and ``text`` as the reader
-    made it: :func:`edsconv.eds.source.as_read`; ``lines`` as the editor counts them) wherever the edit
-    left an entry as it was; then make ``carried`` describe ``text``.
+def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
+    """Put the last analysis's entry objects into ``eds`` (just read whole from the editor's ``raw``,
+    which the reader made ``text``: :func:`edsconv.eds.source.as_read`; ``lines`` as the editor counts
+    them) wherever the edit left an entry as it was; then make ``carried`` describe ``raw``.
 
     An entry wholly before the changed lines stands at the same offset in both texts, one wholly
     after them ``shift`` characters later. This loop runs once per entry of the file: keep it lean.
@@ -123,25 +127,34 @@ def reuse_entries(carried: Carried, text: str, lines: tuple[str, ...], eds: EdsF
     carried.steps = carried.steps + 1 if reusing else 0
     carried.places = places
     carried.reused, carried.read = reused, len(places) - reused
-    carried.keep(text, lines, eds, index_of(eds), False)
+    carried.keep(raw, text, lines, eds, index_of(eds), False)
 
 
-def reread(carried: Carried, text: str) -> tuple[tuple[str, ...], EdsFile] | None:
-    """The lines and syntax model of ``text``, made from those of the last text by reading again the one
-    entry the edit changed; None when the edit did more than change that entry's fields (see the module).
+def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
+    """The lines and syntax model of the editor's ``raw`` text, made from those of the last text by
+    reading again the one entry the edit changed; None when the edit did more than change that entry's
+    fields (see the module).
 
-    Exact because the reader, coming to that entry's start in ``text``, reads it as it does here, and
-    then finds the text after it as it was; its other entries keep their places and lines. The last
-    text was ASCII with ``\n`` line ends and the edit typed nothing else, so ``text`` is the text the
-    reader makes of it (:func:`edsconv.eds.source.as_read`).
+    Exact because the reader, coming to that entry's start in the text it makes of ``raw``, reads it as
+    it does here, and then finds the text after it as it was; its other entries keep their places and
+    lines. The last text was ASCII and the edit typed nothing but printable ASCII, so the reader's text
+    (:func:`edsconv.eds.source.as_read`) is its last one with the same edit, each CR LF before it
+    counted as one character.
     """
-    eds, index, old = carried.eds, carried.index, carried.text
+    eds, index, old_raw = carried.eds, carried.index, carried.raw
     if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
-            or eds.newline != "\n" or len(text) == len(old) and text == old:
+            or len(raw) == len(old_raw) and raw == old_raw:
         return None
-    start, old_end, new_end = changed_span(old, text)
-    if not (_INSIDE_A_LINE.fullmatch(old, start, old_end) and _INSIDE_A_LINE.fullmatch(text, start, new_end)):
+    raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
+    if not (_INSIDE_A_LINE.fullmatch(old_raw, raw_start, raw_old_end)
+            and _INSIDE_A_LINE.fullmatch(raw, raw_start, raw_new_end)):
         return None
+    old, text = carried.text, raw
+    start, old_end, new_end = raw_start, raw_old_end, raw_new_end
+    if eds.newline != "\n":  # the reader's offsets count each CR LF before the edit as one character
+        start -= old_raw.count("\r\n", 0, raw_start)
+        old_end, new_end = start + raw_old_end - raw_start, start + raw_new_end - raw_start
+        text = old[:start] + raw[raw_start:raw_new_end] + old[old_end:]
     at = bisect.bisect_right(carried.starts, start) - 1
     if at < 0:
         return None
@@ -154,7 +167,7 @@ def reread(carried: Carried, text: str) -> tuple[tuple[str, ...], EdsFile] | Non
     keyword, body, entry_end = read
     rest = _REST_OF_LINE.match(text, entry_end)
     if keyword != entry.keyword or start < body or new_end > entry_end or entry_end != end + shift or rest is None \
-            or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(text):
+            or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(raw, text):
         return None
     new_index = index.edited(text, start, shift)
     spliced = Entry.unread(keyword, offset, entry_end, new_index)
@@ -163,14 +176,14 @@ def reread(carried: Carried, text: str) -> tuple[tuple[str, ...], EdsFile] | Non
     for comment in comments_in(text, entry_end, rest.end(), new_index):
         spliced.attach_trailing_comment(comment)
     line = new_index.position(start)[0] - 1
-    line_start = text.rfind("\n", 0, start) + 1
-    lines = carried.lines[:line] + (text[line_start:line_start + len(carried.lines[line]) + shift],) \
+    line_start = max(raw.rfind("\n", 0, raw_start), raw.rfind("\r", 0, raw_start)) + 1
+    lines = carried.lines[:line] + (raw[line_start:line_start + len(carried.lines[line]) + shift],) \
         + carried.lines[line + 1:]
     carried.places = _moved(carried.places, at, (spliced, entry_end, lead, number, position), shift)
     carried.steps += 1
     carried.reused, carried.read = len(carried.places) - 1, 1
     edited = _with_entry(eds, number, position, spliced)
-    carried.keep(text, lines, edited, new_index, True)
+    carried.keep(raw, text, lines, edited, new_index, True)
     return lines, edited
 
 

@@ -30,6 +30,7 @@ def test_a_kept_input_ends_in_diagnostics(name: str, path: Path) -> None:
     assert isinstance(diagnostics, list)
 
 
+@pytest.mark.mutation_run
 @pytest.mark.parametrize("name", sorted(fuzz_targets.TARGETS))
 def test_each_target_survives_a_short_mutation_run(name: str) -> None:
     outcome = mutation.run(name, SECONDS_PER_TARGET, seed=11)

@@ -55,7 +55,7 @@ def test_the_test_matrix_script_is_valid_bash_and_covers_every_allowed_python():
     subprocess.run(["bash", "-n", str(script)], check=True)
     text = script.read_text(encoding="utf-8")
     assert 'run minimum "${pythons[0]}" "not tools" -c "$root/.ci/constraints-min.txt"' in text
-    assert 'pytest -q -n 2 -m "$markers"' in text and '"not tools and not real_corpus"' in text
+    assert 'pytest -q -n 2 -m "$markers"' in text and '"not tools and not real_corpus and not mutation_run"' in text
     assert "pytest-xdist" in " ".join(PYPROJECT["project"]["optional-dependencies"]["test"])
     classifiers = PYPROJECT["project"]["classifiers"]
     floor = int(PYPROJECT["project"]["requires-python"].removeprefix(">=3."))

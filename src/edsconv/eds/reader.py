@@ -23,7 +23,7 @@ from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lexicon import entry_keyword, lexicon
 from edsconv.eds.reader_rules import CANOPEN_EDS, NO_SECTIONS, NOT_ASCII
 from edsconv.eds.refusals import read_bytes, refusal
-from edsconv.eds.runs import GAP_CHARACTERS, check_strings, simple_pieces
+from edsconv.eds.runs import GAP_CHARACTERS, Report, check_strings, simple_pieces
 from edsconv.eds.source import DecodedSource, LineIndex, decode
 from edsconv.eds.statements import SyntaxBuilder
 from edsconv.eds.syntax import EdsFile, Entry
@@ -129,18 +129,22 @@ def simple_entry_at(text: str, offset: int) -> tuple[str, int, int] | None:
     if head is None or head.start("entry") != offset:
         return None
     end = _simple_entry_end(text, head.end(), lex.item.fullmatch, set())
+    problems: list[object] = []
     if end < 0:
-        statement = lex.statement.match(text, offset)
-        if statement is None or statement.start("entry") != offset:
-            return None
-        end = statement.end()
-        run_start, run_end = statement.span("run")
-        if run_start >= 0 and (text.find("\\", run_start, run_end) != -1 or text.find('L"', run_start, run_end) != -1):
-            problems: list[object] = []
-            check_strings(text, run_start, run_end, lambda *problem: problems.append(problem))
-            if problems:
-                return None
-    return entry_keyword(head.group("entry")), head.end(), end
+        end = _matched_statement_end(text, offset, lambda *problem: problems.append(problem))
+    return None if end < 0 or problems else (entry_keyword(head.group("entry")), head.end(), end)
+
+
+def _matched_statement_end(text: str, position: int, report: Report) -> int:
+    """Just after the simple statement the grammar's statement pattern matches at ``position`` (after
+    its TRIVIA), its strings' problems given to ``report``; -1 when the pattern does not match."""
+    statement = lexicon().statement.match(text, position)
+    if statement is None:
+        return -1
+    run_start, run_end = statement.span("run")
+    if run_start >= 0 and (text.find("\\", run_start, run_end) != -1 or text.find('L"', run_start, run_end) != -1):
+        check_strings(text, run_start, run_end, report)
+    return statement.end()
 
 
 def _read(builder: SyntaxBuilder) -> None:
@@ -183,13 +187,9 @@ def _read_simple_statements(builder: SyntaxBuilder, position: int) -> int:
             continue
         end = _simple_entry_end(text, head.end(), lex.item.fullmatch, known)
         if end < 0:
-            statement = lex.statement.match(text, position)
-            if statement is None:
+            end = _matched_statement_end(text, position, builder.report)
+            if end < 0:
                 return position
-            end = statement.end()
-            run_start, run_end = statement.span("run")
-            if run_start >= 0 and (find("\\", run_start, run_end) != -1 or find('L"', run_start, run_end) != -1):
-                check_strings(text, run_start, run_end, builder.report)
         if find("$", position, start) != -1:
             builder.take_comments(position, start)
         keyword = entry_keyword(head.group("entry"))

@@ -143,7 +143,7 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     """
     eds, index, old_raw = carried.eds, carried.index, carried.raw
     if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
-            or len(raw) == len(old_raw) and raw == old_raw:
+            or raw == old_raw:
         return None
     raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
     if not (_INSIDE_A_LINE.fullmatch(old_raw, raw_start, raw_old_end)

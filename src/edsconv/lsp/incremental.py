@@ -68,7 +68,6 @@ class Carried:
     #: the text as the editor holds it, and as the reader made it (:func:`edsconv.eds.source.as_read`)
     raw: str = ""
     text: str = ""
-    line_count: int = -1
     #: every entry of ``text`` by its offset in ``text``, in file order
     places: dict[int, Place] = field(default_factory=dict)
     #: the offsets of ``places``, in file order
@@ -92,7 +91,7 @@ class Carried:
     def keep(self, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile, index: LineIndex | None,
              reread: bool) -> None:
         """Describe ``raw`` (read as ``text``) from now on (``places`` already does)."""
-        self.raw, self.text, self.line_count, self.lines = raw, text, len(lines), lines
+        self.raw, self.text, self.lines = raw, text, lines
         self.eds, self.index, self.starts, self.reread = eds, index, list(self.places), reread
 
 
@@ -105,10 +104,10 @@ def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...],
     after them ``shift`` characters later. This loop runs once per entry of the file: keep it lean.
     """
     start = end = shift = 0
-    reusing = carried.line_count >= 0 and carried.steps < FULL_READ_EVERY
+    reusing = carried.eds is not None and carried.steps < FULL_READ_EVERY
     if reusing:
         start, end, shift = changed_lines(carried.text, text)
-        if carried.line_count != len(lines):
+        if len(carried.lines) != len(lines):
             end = len(text) + 1  # every line after the edit moved: only the entries before it are the same
     known = carried.places
     places: dict[int, Place] = {}

@@ -16,7 +16,7 @@ import importlib
 import re
 import textwrap
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 
 class Severity(enum.IntEnum):
@@ -225,6 +225,16 @@ class Diagnostic:
         requirement that several clauses state (GroupN numbering is C.4.1.4.7, RackN C.4.1.5.2.3)."""
         return cls(rule_.code, message, line, column, path, rule_.severity, clause or rule_.clause, end_line,
                    end_column)
+
+    def moved(self, first_line: int, delta: int) -> Diagnostic:
+        """This diagnostic after the lines from ``first_line`` on moved ``delta`` lines (itself when it
+        stands before them)."""
+        def moved(line: int) -> int:
+            return line + delta if line >= first_line else line
+
+        if self.line < first_line and (self.end_line or 0) < first_line:
+            return self
+        return replace(self, line=moved(self.line), end_line=None if self.end_line is None else moved(self.end_line))
 
     def format(self) -> str:
         """``path:line:col: severity: CODE message [clause]``, as compilers print it (editors' problem matchers

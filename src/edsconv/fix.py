@@ -20,7 +20,7 @@ from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, FixSafety, load_rules
 from edsconv.eds.locate import locate
 from edsconv.eds.reader import parse
-from edsconv.eds.source import encode
+from edsconv.eds.source import encode, split_lines
 from edsconv.eds.syntax import EdsFile
 from edsconv.suppress import SUPPRESSION
 
@@ -29,8 +29,6 @@ from edsconv.suppress import SUPPRESSION
 NULL_STRING_CLAUSES = ("C.4.1.4.9.12",)
 #: At most this many rounds of fix and re-check (each round fixes every fault it can).
 MAX_ROUNDS = 10
-#: A line and its line end, as the reader and LSP count lines (\r\n, \r or \n).
-_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")
 _LEADING_ZEROS = re.compile(r"(?P<sign>[+-]?)0+(?P<digits>[0-9]+)")
 
 
@@ -52,11 +50,6 @@ class Fix:
 
 
 Fixer = Callable[[EdsFile, list[str], Diagnostic], Fix | None]
-
-
-def split_lines(text: str) -> list[str]:
-    """The lines of ``text`` with their line ends."""
-    return _LINE.findall(text)
 
 
 def _line(lines: list[str], number: int) -> str:

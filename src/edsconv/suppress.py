@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from edsconv.diagnostics import Diagnostic, Severity, block, load_rules, rule
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Section, Unparsed, plain_fields
 from edsconv.limits import shown
-from edsconv.model.memo import MISSING, EntryMemo
+from edsconv.model.memo import MISSING, EntryMemo, Kind
 
 #: Comments that name edsconv, each with the lines a suppression in it covers (:func:`directive_comments`)
 Directives = list[tuple[Comment, tuple[int, int]]]
@@ -196,6 +196,10 @@ def directive_comments(eds: EdsFile, memo: EntryMemo | None = None, text: str | 
     return found
 
 
+#: The comments of an entry and of its fields (:func:`_comment_groups`): nodes, which compute their positions
+ENTRY_COMMENTS = Kind("comments of")
+
+
 def _comment_groups(eds: EdsFile, memo: EntryMemo | None = None) \
         -> Iterator[tuple[list[Comment], Section | Entry | Unparsed | None]]:
     """Each node's comments, with the node (None for the comments after the last statement)."""
@@ -205,10 +209,10 @@ def _comment_groups(eds: EdsFile, memo: EntryMemo | None = None) \
             if memo is None:
                 yield _entry_comments(entry), entry
                 continue
-            comments = memo.get("comments of", entry, None)
+            comments = memo.get(ENTRY_COMMENTS, entry, None)
             if comments is MISSING:
                 comments = _entry_comments(entry)
-                memo.put("comments of", entry, None, comments)
+                memo.put(ENTRY_COMMENTS, entry, None, comments)
             yield comments, entry
         for _, unparsed in section.unparsed:
             yield [*unparsed.leading_comments, *unparsed.comments], unparsed

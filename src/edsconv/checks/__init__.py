@@ -128,6 +128,15 @@ class CheckMemo:
         """The analysis ran every check."""
         self._complete = True
 
+    def lines_moved(self, first_line: int, delta: int) -> None:
+        """The lines of the text from ``first_line`` on moved ``delta`` lines: the diagnostics the next
+        analysis can find (:meth:`start`) say where their units now stand (they are in the last text's
+        lines, and now in the next's)."""
+        known = self._current if self._complete else {**self._previous, **self._current}
+        self._current = {key: (block, tuple(d.moved(first_line, delta) for d in found) if found else found)
+                         for key, (block, found) in known.items()}
+        self._previous, self._complete = {}, True
+
     def bind(self, path: str | None) -> None:
         """Diagnostics carry the file's path: another path (a renamed document) starts afresh."""
         if path != self._path:

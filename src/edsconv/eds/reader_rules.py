@@ -155,6 +155,8 @@ DUPLICATE_ENTRY = rule(
                 VendCode = 65535;
     """),
 )
+#: The rules whose messages name the line of another statement (where the first of two stands)
+NAMING_A_LINE = frozenset({DUPLICATE_SECTION.code, DUPLICATE_ENTRY.code})
 CANOPEN_EDS = rule(
     "EDS010", Severity.ERROR, "C.4.1.1", "The file is a CANopen EDS (CiA 306), not a CIP EDS",
     explanation="""

@@ -16,6 +16,8 @@ from dataclasses import dataclass
 
 _NON_ASCII = re.compile(rb"[\x80-\xff]")
 _LINE_START = re.compile(r"\n")
+#: A line and its line end, as the reader and LSP count lines (\r\n, \r or \n).
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,12 +78,8 @@ def decode(data: bytes) -> DecodedSource:
 
 def _with_newlines(text: str, encoding: str, first_line: int | None) -> DecodedSource:
     """The source with every line end normalised to ``\\n``, remembering the first one used."""
-    newline = "\n"
-    crlf = text.find("\r")
-    if crlf != -1:
-        newline = "\r\n" if text.startswith("\r\n", crlf) else "\r"
-        text = _with_line_feeds(text)
-    return DecodedSource(text, encoding, newline, first_line)
+    newline = newline_of(text)
+    return DecodedSource(_with_line_feeds(text) if newline != "\n" else text, encoding, newline, first_line)
 
 
 def _with_line_feeds(text: str) -> str:
@@ -93,6 +91,17 @@ def as_read(text: str) -> str:
     offsets in: without a byte order mark, every line end ``\n`` (:func:`decode`)."""
     text = text.removeprefix("\ufeff")
     return _with_line_feeds(text) if "\r" in text else text
+
+
+def split_lines(text: str) -> list[str]:
+    """The lines of ``text`` with their line ends."""
+    return _LINE.findall(text)
+
+
+def newline_of(text: str) -> str:
+    """The line end ``text`` uses first (``\n`` when it has no CR), which the reader keeps (:func:`decode`)."""
+    first_cr = text.find("\r")
+    return "\n" if first_cr == -1 else "\r\n" if text.startswith("\r\n", first_cr) else "\r"
 
 
 def encode(text: str, encoding: str) -> bytes:
@@ -122,16 +131,33 @@ class LineIndex:
             self._starts.extend(map(re.Match.end, _LINE_START.finditer(self.text)))
         return self._starts
 
-    def edited(self, text: str, at: int, shift: int) -> LineIndex:
-        """The index of ``text``, which an edit at offset ``at`` of this index's text made without breaking
-        or joining a line: the lines after ``at`` start ``shift`` characters later, the others where they did."""
+    def edited(self, text: str, at: int, old_end: int, new_end: int) -> LineIndex:
+        """The index of ``text``, which an edit made of this index's text by putting ``text[at:new_end]`` in
+        place of ``[at, old_end)``: the lines before the edit start where they did, those after it
+        ``new_end - old_end`` characters later."""
         starts = self._line_starts()
         index = LineIndex(text)
-        if shift:
-            line = bisect.bisect_right(starts, at)
-            starts = starts[:line] + array("q", [start + shift for start in starts[line:]])
+        shift = new_end - old_end
+        kept, after = bisect.bisect_right(starts, at), bisect.bisect_right(starts, old_end)
+        typed = array("q", map(re.Match.end, _LINE_START.finditer(text, at, new_end)))
+        if shift or typed or kept != after:
+            starts = starts[:kept] + typed + array("q", [start + shift for start in starts[after:]])
         index._starts = starts  # never changed once made: shared when nothing moved
         return index
+
+    def lines_moved(self, offset: int, delta: int) -> None:
+        """Number the lines from the one holding ``offset`` on ``delta`` more (fewer, when negative), columns
+        as they were: the language server re-uses nodes read from this text in a newer text, where an edit
+        before them added (removed) that many lines (:mod:`edsconv.lsp.incremental`). The line starts
+        removed are the last ones before that line: the caller knows that no node it still reads from
+        this text lies on those lines."""
+        starts = self._line_starts()
+        line = bisect.bisect_right(starts, offset) - 1  # the last copy of the line's start
+        # a new array: an index made by edited() may share this one
+        if delta > 0:
+            self._starts = starts[:line] + array("q", [starts[line]]) * delta + starts[line:]
+        else:
+            self._starts = starts[:line + delta] + starts[line:]
 
     def position(self, offset: int) -> tuple[int, int]:
         starts = self._line_starts()

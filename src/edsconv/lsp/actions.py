@@ -15,9 +15,10 @@ from collections.abc import Iterator, Sequence
 from edsconv.diagnostics import Diagnostic, Severity
 from edsconv.eds.canonical import write_canonical
 from edsconv.eds.locate import locate
+from edsconv.eds.source import split_lines
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Section
 from edsconv.fix import Edit, Fix, fix_for
-from edsconv.lsp.analysis import Analysis, split_lines
+from edsconv.lsp.analysis import Analysis
 from edsconv.suppress import SUPPRESSION as _SUPPRESSION
 
 #: The inline suppression comment :mod:`edsconv.suppress` honours.

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import asyncio
 import gc
-import re
 import traceback
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -24,9 +23,9 @@ from dataclasses import dataclass, field
 
 import edsconv
 from edsconv.diagnostics import Diagnostic
-from edsconv.eds.source import as_read
+from edsconv.eds.source import as_read, split_lines
 from edsconv.eds.syntax import EdsFile, Entry
-from edsconv.lsp.incremental import Carried, reread, reuse_entries
+from edsconv.lsp.incremental import Carried, reread, respaced, reuse_entries
 from edsconv.model import Device
 from edsconv.model.references import Occurrence, definitions, occurrences
 from edsconv.suppress import Directives, directive_comments
@@ -38,8 +37,6 @@ IDLE_COLLECTION = 1.0
 #: young generations, collected every time, hold what an analysis made
 FULL_COLLECTION_EVERY = 50
 
-#: A line and its line end: LSP breaks lines at \r\n, \r and \n only (as the EDS reader does).
-_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")
 
 
 @dataclass(slots=True)
@@ -68,11 +65,6 @@ class Superseded(Exception):
     """A newer text of the document arrived before this analysis was done: it stopped."""
 
 
-def split_lines(text: str) -> tuple[str, ...]:
-    """The lines of ``text`` with their line ends, as LSP counts them."""
-    return tuple(_LINE.findall(text))
-
-
 def _never() -> bool:
     return False
 
@@ -96,8 +88,9 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
             raise Superseded
 
     step()
-    spliced = reread(carried, text) if carried is not None else None
-    lines, eds = spliced or (split_lines(text), edsconv.parse(text, path))
+    with paused_gc():  # a splice makes many objects too (respaced: the moved spans)
+        spliced = (reread(carried, text) or respaced(carried, text)) if carried is not None else None
+    lines, eds = spliced or (tuple(split_lines(text)), edsconv.parse(text, path))
     step()
     with paused_gc():
         try:

@@ -14,8 +14,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 from edsconv import describe
-from edsconv.eds.source import encode
-from edsconv.fix import Edit, fix_source, split_lines
+from edsconv.eds.source import encode, split_lines
+from edsconv.fix import Edit, fix_source
 from edsconv.lsp.actions import minimal_edits
 from edsconv.lsp.analysis import Analysis
 from edsconv.lsp.settings import Settings

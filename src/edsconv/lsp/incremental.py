@@ -5,21 +5,28 @@ fields of one entry of an ASCII text (no line break, nothing outside printable A
 ends, which the reader's offsets count as one character each) and the reader reads the
 new entry as a simple statement ending where the old one ended, only that entry is read
 again (:func:`reread`): the new syntax model is the last one with that entry replaced, and
-the lines and line index are the last ones with that line replaced. Any other edit reads the
-new text whole, then every entry whose lines the edit did not touch is replaced by the very
-same :class:`~edsconv.eds.syntax.Entry` object of the last analysis (:func:`reuse_entries`).
-Either way the model (:class:`~edsconv.model.memo.EntryMemo`) and the checks
-(:class:`~edsconv.checks.CheckMemo`) find the records and diagnostics they made from the
-entries they saw before.
+the lines and line index are the last ones with that line replaced. When it typed or deleted
+whole blank lines outside every entry (Enter at the end of a line, a blank line deleted), nothing
+is read: the last syntax model is the new one, every node after the edit moved to its new line
+(:func:`respaced`). Any other edit reads the new text whole, then every entry whose lines the
+edit did not touch is replaced by the very same :class:`~edsconv.eds.syntax.Entry` object of the
+last analysis (:func:`reuse_entries`). Either way the model (:class:`~edsconv.model.memo.EntryMemo`)
+and the checks (:class:`~edsconv.checks.CheckMemo`) find the records and diagnostics they made
+from the entries they saw before.
 
 An entry is the same when the text from its first leading comment to the end of its last
 line lies wholly before or wholly after the changed lines, and the new reading found an
-entry of the same keyword and length at the same place. Positions stay right: a re-used
-entry reports the line and column of its own text, and its lines keep their numbers. After
-an edit that adds or removes a line (Enter, a deleted line, a paste) only the entries before
-it are re-used, since every line after it moves (and with it the positions the model and
-the checks recorded). Every :data:`FULL_READ_EVERY`-th edit is analysed from scratch, which
-lets go of the older texts that re-used entries still point into.
+entry of the same keyword and length at the same place. Positions stay right: a node reports
+the line and column of the text it was read from, through that text's line index. An edit
+that adds or removes lines moves the nodes after it: the index of each older text they were
+read from then numbers its lines from the first of them on that many more or fewer
+(:meth:`~edsconv.eds.source.LineIndex.lines_moved`), and the records, spans and diagnostics the
+memos hold move with them. Every :data:`FULL_READ_EVERY`-th edit is analysed from scratch,
+which lets go of the older texts that re-used entries still point into.
+
+The analyses of one document run one at a time (:class:`edsconv.lsp.analysis.Analyses`): moving
+an older text's lines changes what the analyses of the texts before this one answer, and no
+request reads those any more.
 """
 
 from __future__ import annotations
@@ -33,9 +40,9 @@ from itertools import islice
 from edsconv.checks import CheckMemo
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.reader import read_statement_by_statement, simple_entry_at
-from edsconv.eds.reader_rules import DUPLICATE_ENTRY, ENTRY_OUTSIDE_SECTION
+from edsconv.eds.reader_rules import DUPLICATE_ENTRY, ENTRY_OUTSIDE_SECTION, NAMING_A_LINE
 from edsconv.eds.runs import comments_in
-from edsconv.eds.source import LineIndex
+from edsconv.eds.source import LineIndex, as_read, newline_of, split_lines
 from edsconv.eds.syntax import EdsFile, Entry
 from edsconv.model.memo import EntryMemo
 
@@ -50,6 +57,8 @@ _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 _INSIDE_A_LINE = re.compile(r"[\x20-\x7e\t]*")
 #: The rest of an entry's last line when no other statement stands on it: blanks, perhaps a comment
 _REST_OF_LINE = re.compile(r"[ \t\f\v\x1a]*+(?:\$[^\n]*+)?(?:\n|\Z)")
+#: Whole lines of blanks, as an edit between statements types or deletes them (:func:`respaced`)
+_BLANK_LINES = re.compile(r"(?:[ \t]*(?:\r\n|\r|\n))*")
 #: Diagnostics the reader gives an entry at its start whatever its fields say
 _ABOUT_THE_KEYWORD = frozenset({DUPLICATE_ENTRY.code, ENTRY_OUTSIDE_SECTION.code})
 
@@ -85,14 +94,15 @@ class Carried:
     #: entries re-used by the last analysis, and entries read anew (for the tests and benchmarks)
     reused: int = 0
     read: int = 0
-    #: whether the last analysis read only the entry the edit changed (:func:`reread`)
-    reread: bool = False
+    #: how the last analysis made its syntax model of the last one: "reread" (:func:`reread`), "respaced"
+    #: (:func:`respaced`), else "" (read whole)
+    splice: str = ""
 
     def keep(self, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile, index: LineIndex | None,
-             reread: bool) -> None:
+             splice: str) -> None:
         """Describe ``raw`` (read as ``text``) from now on (``places`` already does)."""
         self.raw, self.text, self.lines = raw, text, lines
-        self.eds, self.index, self.starts, self.reread = eds, index, list(self.places), reread
+        self.eds, self.index, self.starts, self.splice = eds, index, list(self.places), splice
 
 
 def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
@@ -101,16 +111,18 @@ def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...],
     them) wherever the edit left an entry as it was; then make ``carried`` describe ``raw``.
 
     An entry wholly before the changed lines stands at the same offset in both texts, one wholly
-    after them ``shift`` characters later. This loop runs once per entry of the file: keep it lean.
+    after them ``shift`` characters later, and ``moved`` lines later (:func:`_lines_moved`). This loop
+    runs once per entry of the file: keep it lean.
     """
-    start = end = shift = 0
+    start = end = shift = moved = 0
     reusing = carried.eds is not None and carried.steps < FULL_READ_EVERY
     if reusing:
-        start, end, shift = changed_lines(carried.text, text)
-        if len(carried.lines) != len(lines):
-            end = len(text) + 1  # every line after the edit moved: only the entries before it are the same
+        start, end, shift, moved = changed_lines(carried.text, text)
     known = carried.places
     places: dict[int, Place] = {}
+    #: where the first node after the edit read from each older text stands in it (by its line index),
+    #: when lines moved
+    firsts: dict[LineIndex, int] = {}
     reused = 0
     for number, section in enumerate(eds.holders()):
         entries = section.entries
@@ -122,11 +134,40 @@ def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...],
                     and old_offset - old[2] == offset - lead:
                 entries[index] = entry = old[0]
                 reused += 1
+                if moved and lead >= end:
+                    _first_after(firsts, entry, lead != offset)
             places[offset] = (entry, entry_end, lead, number, index)
+    if firsts:
+        _lines_moved(carried, firsts, carried.index.position(end - shift)[0], moved)  # type: ignore[union-attr]
     carried.steps = carried.steps + 1 if reusing else 0
     carried.places = places
     carried.reused, carried.read = reused, len(places) - reused
-    carried.keep(raw, text, lines, eds, index_of(eds), False)
+    carried.keep(raw, text, lines, eds, index_of(eds), "")
+
+
+def _first_after(firsts: dict[LineIndex, int], entry: Entry, with_leading_comments: bool) -> None:
+    """Note where ``entry``, the next re-used entry after an edit, starts in the texts it was read from
+    (its leading comments may come from an older text than the entry: :func:`reread`), unless an earlier
+    node of that text is noted. Either offset is right for both: they stand before the edit that read
+    the entry again, where the two texts are the same."""
+    lead = entry.lead_offset
+    firsts.setdefault(entry.source, lead)  # type: ignore[arg-type]  # read entries have one
+    if with_leading_comments:
+        firsts.setdefault(entry.leading_comments[0].source, lead)  # type: ignore[arg-type]
+
+
+def _lines_moved(carried: Carried, firsts: dict[LineIndex, int], first_line: int, moved: int) -> None:
+    """An edit added ``moved`` lines (removed, when negative) before line ``first_line`` of the last
+    text: the nodes after it, read from older texts, and what the memos made of them, say their new lines.
+
+    The nodes before and after the edit that were read from one text keep their order in it, so
+    numbering the lines of that text from the first one after the edit on ``moved`` more (``firsts``:
+    where that node stands) moves exactly those after it; the line starts removed when ``moved`` is
+    negative lie between the two groups, on lines the edit removed (:meth:`LineIndex.lines_moved`)."""
+    for index, offset in firsts.items():
+        index.lines_moved(offset, moved)
+    carried.memo.lines_moved(first_line, moved)
+    carried.checks.lines_moved(first_line, moved)
 
 
 def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
@@ -168,7 +209,7 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     if keyword != entry.keyword or start < body or new_end > entry_end or entry_end != end + shift or rest is None \
             or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(raw, text):
         return None
-    new_index = index.edited(text, start, shift)
+    new_index = index.edited(text, start, old_end, new_end)
     spliced = Entry.unread(keyword, offset, entry_end, new_index)
     if entry.lead_offset != entry.offset:
         spliced.leading_comments = list(entry.leading_comments)
@@ -182,8 +223,80 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     carried.steps += 1
     carried.reused, carried.read = len(carried.places) - 1, 1
     edited = _with_entry(eds, number, position, spliced)
-    carried.keep(raw, text, lines, edited, new_index, True)
+    carried.keep(raw, text, lines, edited, new_index, "reread")
     return lines, edited
+
+
+def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
+    """The lines and syntax model of the editor's ``raw`` text when the edit typed or deleted nothing but
+    whole blank lines, outside every entry (Enter at the end of a line, a blank line deleted): the last
+    syntax model with every node after the edit on its new line (:func:`_lines_moved`); None for any
+    other edit, or a file with text the reader could not parse or a finding whose message names a line.
+
+    Exact because the reader makes nothing of blank lines between statements: they end no statement,
+    and a comment keeps its owner (the statement whose last line it stands on, else the next one).
+    The line ends typed must be those of the file (the reader keeps its first one).
+    """
+    eds, index, old_raw = carried.eds, carried.index, carried.raw
+    if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
+            or raw == old_raw or any(section.unparsed for section in eds.holders()) \
+            or any(d.code in NAMING_A_LINE for d in eds.diagnostics):
+        return None
+    raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
+    if not (_blank_lines(old_raw, raw_start, raw_old_end) and _blank_lines(raw, raw_start, raw_new_end)) \
+            or newline_of(raw) != eds.newline:
+        return None
+    old, text = carried.text, raw
+    start, old_end, new_end = raw_start, raw_old_end, raw_new_end
+    if eds.newline != "\n":  # the reader's offsets count each CR LF as one character
+        start -= old_raw.count("\r\n", 0, raw_start)
+        typed = as_read(raw[raw_start:raw_new_end])
+        old_end, new_end = start + len(as_read(old_raw[raw_start:raw_old_end])), start + len(typed)
+        text = old[:start] + typed + old[old_end:]
+    at = bisect.bisect_left(carried.starts, start)  # the first entry after the edit
+    if at > 0 and carried.places[carried.starts[at - 1]][1] > start or not read_statement_by_statement(raw, text):
+        return None  # inside an entry
+    first_line, first_moved_line = index.position(start)[0], index.position(old_end)[0]
+    moved = text.count("\n", start, new_end) - old.count("\n", start, old_end)
+    firsts = _nodes_after(carried, eds, at, start, first_line)
+    new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
+    lines = carried.lines[:first_line - 1] + tuple(split_lines(raw[raw_start:raw_new_end])) \
+        + carried.lines[first_moved_line - 1:]
+    if moved:
+        _lines_moved(carried, firsts, first_moved_line, moved)
+    moved_eds = dataclasses.replace(eds, diagnostics=[d.moved(first_moved_line, moved) for d in eds.diagnostics])
+    carried.places = _shifted(carried.places, at, new_end - old_end, start)
+    carried.steps += 1
+    carried.reused, carried.read = len(carried.places), 0
+    carried.keep(raw, text, lines, moved_eds, new_index, "respaced")
+    return lines, moved_eds
+
+
+def _blank_lines(text: str, start: int, end: int) -> bool:
+    """Whether ``text[start:end]`` is whole blank lines (or nothing), between two line starts."""
+    return _starts_line(text, start) and _starts_line(text, end) \
+        and _BLANK_LINES.fullmatch(text, start, end) is not None
+
+
+def _nodes_after(carried: Carried, eds: EdsFile, at: int, start: int, first_line: int) -> dict[LineIndex, int]:
+    """Where the first node at or after offset ``start`` of the last text (line ``first_line``, the
+    ``at``-th entry and the entries after it) stands in the text it was read from, by that text's index."""
+    firsts: dict[LineIndex, int] = {}
+    places = carried.places
+    for offset in islice(carried.starts, at, None):
+        entry, _, lead, _, _ = places[offset]
+        if lead >= start:
+            _first_after(firsts, entry, lead != offset)
+        else:  # its leading comments stand before the edit
+            firsts.setdefault(entry.source, entry.offset)  # type: ignore[arg-type]  # read entries have one
+    for section in eds.holders():
+        for node in (*section.leading_comments, section, *section.comments):
+            if node.source is not None and node.line >= first_line:
+                firsts[node.source] = min(firsts.get(node.source, node.offset), node.offset)
+    for comment in eds.trailing_comments:
+        if comment.source is not None and comment.line >= first_line:
+            firsts[comment.source] = min(firsts.get(comment.source, comment.offset), comment.offset)
+    return firsts
 
 
 def _quiet(diagnostics: list[Diagnostic], entry: Entry) -> bool:
@@ -196,16 +309,22 @@ def _quiet(diagnostics: list[Diagnostic], entry: Entry) -> bool:
 
 def _moved(places: dict[int, Place], at: int, place: Place, shift: int) -> dict[int, Place]:
     """``places`` with the ``at``-th replaced by ``place`` and the ones after it ``shift`` characters later."""
+    replaced = dict(places)
+    replaced[place[0].offset] = place
+    return _shifted(replaced, at + 1, shift, place[0].offset)
+
+
+def _shifted(places: dict[int, Place], first: int, shift: int, edit: int) -> dict[int, Place]:
+    """``places`` with the ones from the ``first``-th on ``shift`` characters later, and the leading
+    comments of those after offset ``edit`` (the others stand before the edit)."""
     items = iter(places.items())
-    moved = dict(islice(items, at))
-    moved[place[0].offset] = place
-    next(items)
+    shifted = dict(islice(items, first))
     if not shift:
-        moved.update(items)
-        return moved
+        shifted.update(items)
+        return shifted
     for offset, (entry, end, lead, number, position) in items:
-        moved[offset + shift] = (entry, end + shift, lead + shift, number, position)
-    return moved
+        shifted[offset + shift] = (entry, end + shift, lead + shift if lead >= edit else lead, number, position)
+    return shifted
 
 
 def _with_entry(eds: EdsFile, number: int, position: int, entry: Entry) -> EdsFile:
@@ -235,14 +354,35 @@ def changed_span(old: str, new: str) -> tuple[int, int, int]:
     return start, len(old) - suffix, len(new) - suffix
 
 
-def changed_lines(old: str, new: str) -> tuple[int, int, int]:
-    """``(start, end, shift)``: the lines of ``new`` an edit of ``old`` touched, from the start of the
-    first to just after the line break of the last (or the end), and ``len(new) - len(old)``:
-    what stands after ``end`` stood ``shift`` characters earlier in ``old``."""
-    prefix, _, changed_end = changed_span(old, new)
+def changed_lines(old: str, new: str) -> tuple[int, int, int, int]:
+    """``(start, end, shift, moved)``: the lines of ``new`` an edit of ``old`` touched, from the start of the
+    first to just after the line break of the last (or the end; where the changed text ends at a line
+    start of both texts, as when whole lines are typed or deleted, that line start), ``len(new) -
+    len(old)`` and the lines the edit added (removed, when negative): what stands after ``end`` stood
+    ``shift`` characters and ``moved`` lines earlier in ``old``."""
+    prefix, old_end, changed_end = changed_span(old, new)
     start = max(new.rfind("\n", 0, prefix), new.rfind("\r", 0, prefix)) + 1
+    moved = _line_breaks(new, prefix, changed_end) - _line_breaks(old, prefix, old_end)
+    if _starts_line(new, changed_end) and _starts_line(old, old_end):
+        return start, changed_end, len(new) - len(old), moved
     line_break = _LINE_BREAK.search(new, changed_end)
-    return start, line_break.end() if line_break else len(new), len(new) - len(old)
+    return start, line_break.end() if line_break else len(new), len(new) - len(old), moved
+
+
+def _starts_line(text: str, offset: int) -> bool:
+    """Whether a line starts at ``offset`` (a CR followed by LF ends no line)."""
+    if offset == 0:
+        return True
+    before = text[offset - 1]
+    return before == "\n" or (before == "\r" and text[offset:offset + 1] != "\n")
+
+
+def _line_breaks(text: str, start: int, end: int) -> int:
+    """The line breaks in ``text[start:end]`` and the CR before or LF after it (the same in both texts
+    compared), so that a CR LF across either edge counts once."""
+    start -= start > 0 and text[start - 1] == "\r"
+    end += end < len(text) and text[end] == "\n"
+    return len(_LINE_BREAK.findall(text, start, end))
 
 
 def _common_prefix(a: str, b: str) -> int:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import functools
 import re
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from edsconv import spec_tables as tables
@@ -43,7 +43,7 @@ from edsconv.model import (
 )
 from edsconv.model.cip_build import attach
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
-from edsconv.model.memo import MISSING, EntryMemo
+from edsconv.model.memo import MISSING, EntryMemo, Kind
 from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
 
 OBSOLETE_DATA_TYPE = rule(
@@ -182,6 +182,18 @@ class _Made:
     unreadable: list[Unreadable]
     erroneous: list[tuple[tuple[str, str, int], str]]
 
+    def moved(self, first_line: int, delta: int) -> _Made:
+        """This record's diagnostics after the lines from ``first_line`` on moved ``delta`` lines."""
+        if not self.diagnostics:
+            return self
+        return replace(self, diagnostics=[d.moved(first_line, delta) for d in self.diagnostics])
+
+
+#: The record made from an entry, and what making it reported (:meth:`_Builder.record`)
+RECORD = Kind("record", _Made.moved)
+#: The notes made of an entry's comments (:meth:`_Builder.collect_comments`)
+COMMENT_NOTES = Kind("comments")
+
 
 class _Builder:
     def __init__(self, eds: EdsFile, memo: EntryMemo | None = None) -> None:
@@ -200,7 +212,7 @@ class _Builder:
         if self.memo is None:
             return make()
         section = self.section_of[id(entry)]
-        made = self.memo.get("record", entry, section)
+        made = self.memo.get(RECORD, entry, section)
         if made is MISSING:
             diagnostics, unreadable = len(self.diagnostics), len(self.device.unreadable)
             self.erroneous_made = []
@@ -208,7 +220,7 @@ class _Builder:
             made = _Made(record, self.diagnostics[diagnostics:], self.device.unreadable[unreadable:],
                          self.erroneous_made)
             self.erroneous_made = None
-            self.memo.put("record", entry, section, made)
+            self.memo.put(RECORD, entry, section, made)
         else:
             self.diagnostics += made.diagnostics
             self.device.unreadable += made.unreadable
@@ -341,10 +353,10 @@ class _Builder:
                 if memo is None:
                     notes += _entry_notes(name, entry)
                     continue
-                made = memo.get("comments", entry, name)
+                made = memo.get(COMMENT_NOTES, entry, name)
                 if made is MISSING:
                     made = _entry_notes(name, entry)
-                    memo.put("comments", entry, name, made)
+                    memo.put(COMMENT_NOTES, entry, name, made)
                 notes += made
 
     def collect_unparsed(self) -> None:

@@ -5,14 +5,30 @@ the entries an edit did not touch (:mod:`edsconv.lsp.incremental`). What is made
 such an entry alone (its record, the comments it carries, the places that name
 other entries in it) is then the same, and is looked up here by the object, never
 made again. Whatever other entries decide is made anew on every version.
+
+An edit that adds or removes lines moves the entries after it: the values of a
+:class:`Kind` that holds line numbers are then moved with them (:meth:`EntryMemo.lines_moved`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 #: What :meth:`EntryMemo.get` answers for what it does not hold
 MISSING = object()
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Kind:
+    """A kind of value made from an entry (compared by identity: each is made once, where its values are
+    made). ``moved(value, first_line, delta)`` is the value after the lines from ``first_line`` on
+    moved ``delta`` lines; None for values that hold no line number (their nodes compute positions
+    when asked)."""
+
+    name: str
+    moved: Callable[[Any, int, int], Any] | None = None
 
 
 class EntryMemo:
@@ -22,8 +38,8 @@ class EntryMemo:
     holds alive)."""
 
     def __init__(self) -> None:
-        self._known: dict[tuple[str, int], tuple[object, object, Any]] = {}
-        self._used: dict[tuple[str, int], tuple[object, object, Any]] = {}
+        self._known: dict[tuple[Kind, int], tuple[object, object, Any]] = {}
+        self._used: dict[tuple[Kind, int], tuple[object, object, Any]] = {}
         self._complete = True
         self.hits = self.misses = 0
 
@@ -36,7 +52,7 @@ class EntryMemo:
     def finish(self) -> None:
         self._complete = True
 
-    def get(self, kind: str, node: object, context: object) -> Any:
+    def get(self, kind: Kind, node: object, context: object) -> Any:
         """What was made of ``node`` in ``context`` (and keeps it for the next version), else MISSING."""
         key = (kind, id(node))
         found = self._known.get(key)
@@ -47,5 +63,14 @@ class EntryMemo:
         self._used[key] = found
         return found[2]
 
-    def put(self, kind: str, node: object, context: object, value: Any) -> None:
+    def put(self, kind: Kind, node: object, context: object, value: Any) -> None:
         self._used[(kind, id(node))] = (node, context, value)
+
+    def lines_moved(self, first_line: int, delta: int) -> None:
+        """The lines of the text from ``first_line`` on moved ``delta`` lines: every value the next version
+        can find (:meth:`start`) says where its entry now stands (the values are in the last text's lines,
+        and now in the next's)."""
+        known = self._used if self._complete else {**self._known, **self._used}
+        self._used = {key: (node, context, value if key[0].moved is None else key[0].moved(value, first_line, delta))
+                      for key, (node, context, value) in known.items()}
+        self._known, self._complete = {}, True

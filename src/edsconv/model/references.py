@@ -22,7 +22,7 @@ from edsconv import spec_tables as tables
 from edsconv.eds.syntax import EdsFile, Entry, String
 from edsconv.model import Device, Reference
 from edsconv.model.build import iter_references
-from edsconv.model.memo import MISSING, EntryMemo
+from edsconv.model.memo import MISSING, EntryMemo, Kind
 
 #: A parameter substitution inside a path string, bracketed or not (C.4.1.4.9.13).
 # a path reference standing alone: not part of a longer word
@@ -48,9 +48,24 @@ class Occurrence:
     #: the keyword of the entry the span is written in
     entry: str
 
+    def moved(self, first_line: int, delta: int) -> Occurrence:
+        """This span after the lines from ``first_line`` on moved ``delta`` lines."""
+        if self.line < first_line:
+            return self
+        return Occurrence(self.target, self.line + delta, self.column, self.end_column, self.prefix, self.kind,
+                          self.entry)
+
     def renamed(self, number: int) -> str:
         """The text of the span when the target is renumbered to ``number``."""
         return f"{self.prefix}{number}"
+
+
+def _moved_spans(spans: list[Occurrence], first_line: int, delta: int) -> list[Occurrence]:
+    return [span.moved(first_line, delta) for span in spans]
+
+
+#: The spans of an entry (:func:`occurrences`)
+SPANS = Kind("spans", _moved_spans)
 
 
 def definitions(device: Device) -> dict[str, Entry]:
@@ -89,10 +104,10 @@ def occurrences(eds: EdsFile, device: Device, lines: Sequence[str], memo: EntryM
                 found += _entry_spans(section.name, entry, target, written, lines)
                 continue
             context = (section.name, target, len(written))
-            spans = memo.get("spans", entry, context)
+            spans = memo.get(SPANS, entry, context)
             if spans is MISSING:
                 spans = _entry_spans(section.name, entry, target, written, lines)
-                memo.put("spans", entry, context, spans)
+                memo.put(SPANS, entry, context, spans)
             found += spans
     return found
 

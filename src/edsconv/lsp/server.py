@@ -26,6 +26,7 @@ from edsconv.lsp import actions, completion, hover, navigation, symbols
 from edsconv.lsp.analysis import Analyses, Analysis, Superseded
 from edsconv.lsp.commands import ShowRenderer
 from edsconv.lsp.diagnostics import CHANGE_DELAY, Publisher
+from edsconv.lsp.document import LspProtocol
 from edsconv.lsp.positions import Positions
 from edsconv.lsp.settings import Settings, settings_for
 from edsconv.lsp.workspace import WorkspaceChecker
@@ -47,7 +48,8 @@ class EdsLanguageServer(LanguageServer):
             version = metadata.version("edsconv")
         except metadata.PackageNotFoundError:
             version = "0"
-        super().__init__(NAME, version, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        super().__init__(NAME, version, text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
+                         protocol_cls=LspProtocol)
         self.analyses = Analyses()
         self.publisher = Publisher(self, self.analyses, self.settings, lambda: self.pulls)
         self.show_renderer = show_renderer

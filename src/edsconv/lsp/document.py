@@ -20,7 +20,7 @@ from lsprotocol import types
 from pygls.protocol import LanguageServerProtocol, lsp_method
 from pygls.workspace import PositionCodec, TextDocument, Workspace
 
-from edsconv.lsp.analysis import split_lines
+from edsconv.eds.source import split_lines
 
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 
@@ -106,7 +106,7 @@ class LspDocument(TextDocument):
         """The lines of the text, each with its line break, as LSP counts them."""
         source = self.source
         if self._split is not source:
-            self._lines, self._split = split_lines(source), source
+            self._lines, self._split = tuple(split_lines(source)), source
         return self._lines
 
     def apply_change(self, change: types.TextDocumentContentChangeEvent) -> None:

@@ -10,8 +10,9 @@ one character of a value is changed, N times; the time runs from the didChange
 notification (the change is made before) to the publishDiagnostics that answers it, the pause the server
 waits for typing to settle (CHANGE_DELAY) included. Hover and completion right
 after a change are timed from the didChange to the answer. "new line": the
-diagnostics after a blank line is typed at the top or deleted, an edit that moves
-every line, so the server re-uses nothing (edsconv.lsp.incremental): the worst case.
+diagnostics after a blank line is typed at the top, and "(completion)" the
+completion right after it is deleted again: edits that move every line, every
+position the last analysis holds (edsconv.lsp.incremental.respaced).
 Beside them, the time of one full re-check of the file in this process
 (``analyse``, warm, without what an earlier analysis left), which is what the
 server did per change before. Hover and definition: on every real
@@ -94,7 +95,7 @@ def one_character_change(uri: str, text: str, version: int) -> types.DidChangeTe
 
 def line_break_change(uri: str, version: int, typed: bool) -> types.DidChangeTextDocumentParams:
     """A blank line typed at the top of the file (``typed``) or deleted again: an edit that moves
-    every line, so that the server re-uses no entry (edsconv.lsp.incremental)."""
+    every line."""
     at = types.Position(0, 0)
     where = types.Range(at, at if typed else types.Position(1, 0))
     return types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version=version, uri=uri),
@@ -127,20 +128,26 @@ async def change_latency(client: Client, path: Path, repeat: int) -> dict:
         await client.text_document_completion_async(types.CompletionParams(document, position))
         completions.append(time.perf_counter() - start)
         await client.next_diagnostics(uri)
-    line_breaks = []
+    line_breaks, line_break_completions = [], []
     first = 2 + 3 * repeat
-    for line_version in range(first, first + 2 * repeat):
-        start = time.perf_counter()
-        client.text_document_did_change(line_break_change(uri, line_version, (line_version - first) % 2 == 0))
-        await client.next_diagnostics(uri)
-        line_breaks.append(time.perf_counter() - start)
+    for line_version in range(first, first + 4 * repeat, 2):
+        for typed, timings in ((True, line_breaks), (False, line_break_completions)):  # a blank line, then none
+            start = time.perf_counter()
+            client.text_document_did_change(line_break_change(uri, line_version + (not typed), typed))
+            if timings is line_break_completions:  # the position stands where it did: the line is gone again
+                await client.text_document_completion_async(types.CompletionParams(document, position))
+                timings.append(time.perf_counter() - start)
+            await client.next_diagnostics(uri)
+            if timings is line_breaks:
+                timings.append(time.perf_counter() - start)
     client.text_document_did_close(types.DidCloseTextDocumentParams(document))
     full, _ = best_of(repeat, analyse, text)
     return {"file": path.name, "bytes": path.stat().st_size, "open_to_diagnostics_s": opened,
             "change_to_diagnostics_s": statistics.median(changes), "change_to_diagnostics_max_s": max(changes),
             "hover_after_change_s": statistics.median(hovers),
             "completion_after_change_s": statistics.median(completions),
-            "line_break_to_diagnostics_s": statistics.median(line_breaks), "full_recheck_s": full}
+            "line_break_to_diagnostics_s": statistics.median(line_breaks),
+            "completion_after_line_break_s": statistics.median(line_break_completions), "full_recheck_s": full}
 
 
 async def request_latency(client: Client, files: list[Path], repeat: int) -> dict:
@@ -195,13 +202,13 @@ def main() -> None:
     print(f"after a one-character change (median of {arguments.repeat}; the {CHANGE_DELAY * 1000:.0f} ms pause "
           "included), beside one full re-check")
     print(f"  {'file':<34} {'bytes':>10} {'diagnostics':>12} {'(max)':>7} {'hover':>7} {'completion':>11} "
-          f"{'new line':>9} {'full re-check':>14}")
+          f"{'new line':>9} {'(completion)':>13} {'full re-check':>14}")
     for change in result["change"]:
         ms = {key: f"{value * 1000:.0f} ms" for key, value in change.items() if key.endswith("_s")}
         print(f"  {change['file'][-34:]:<34} {change['bytes']:>10,} {ms['change_to_diagnostics_s']:>12} "
               f"{ms['change_to_diagnostics_max_s']:>7} {ms['hover_after_change_s']:>7} "
               f"{ms['completion_after_change_s']:>11} {ms['line_break_to_diagnostics_s']:>9} "
-              f"{ms['full_recheck_s']:>14}")
+              f"{ms['completion_after_line_break_s']:>13} {ms['full_recheck_s']:>14}")
     if requests is None:
         return
     print(f"{requests['requests']} references on {requests['files']} files (best of {arguments.repeat} each)")

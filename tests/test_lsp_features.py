@@ -184,10 +184,13 @@ async def test_unopened_files_of_the_workspace_are_checked_in_the_background(cli
 
 async def test_workspace_symbols_find_entries_in_open_and_unopened_files(client: LanguageClient):
     uri = await opened(client, "symbols")
+    unopened = (STATE["folder"] / "adapter.eds").as_uri()
+    while unopened not in client.diagnostics:  # its symbols are known once the background check read it
+        await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
     symbols = await client.workspace_symbol_async(types.WorkspaceSymbolParams(query="inflt"))
     places = {(s.location.uri, s.name) for s in symbols}
     assert (uri, "Param2 Input Filter") in places
-    assert ((STATE["folder"] / "adapter.eds").as_uri(), "Param2 Input Filter") in places
+    assert (unopened, "Param2 Input Filter") in places
     assert all("Input Filter" in name for _, name in places)
 
 

@@ -12,12 +12,17 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import REPO, SHARED_REAL
-from edsconv.lsp.analysis import Analysis, analyse
+from edsconv.lsp.analysis import Analysis, Superseded, analyse
 from edsconv.lsp.incremental import FULL_READ_EVERY, Carried, changed_lines
+from edsconv.model import Reference
+from edsconv.model.build import iter_references
 
 #: with a suppression on an entry, so that the suppressions' lines are compared too
 EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text(encoding="ascii").replace(
     "ProdCode = 1001;", "ProdCode = 1001;   $ edsconv: ignore[EDS103]")
+#: the typed view of the content beyond the 2003 text (model.cip), which the model's equality leaves out
+NEWER_CONTENT = ("capacity", "object_classes", "tcpip_interface", "ethernet_link", "dlr", "ingress_egress",
+                 "devicenet", "extended_assemblies", "icon_contents", "additions")
 #: what an edit may type or delete: the characters that change how an EDS reads
 TYPED = [*';,"$[]{}=0123456789xAZaz -.\\\t', "\u00e9"]
 
@@ -47,6 +52,33 @@ def answers(analysis: Analysis) -> tuple:
             [(c.text, c.line, c.column, reach) for c, reach in analysis.directives or []])
 
 
+def readable_answers(analysis: Analysis) -> tuple:
+    """What hover, completion and navigation read: the lines, the syntax model, the places naming
+    entries in their order, the definitions, the model (records with their enums and size adders,
+    the references' targets, the typed view of the newer content)."""
+    device = analysis.device
+    return (analysis.lines, analysis.eds, positions(analysis), analysis.spans,
+            {keyword: (entry, entry.line, entry.column) for keyword, entry in analysis.definitions.items()}, device,
+            device.eds is analysis.eds,
+            [(reference.keyword, reference.target) for reference in iter_references(device)],
+            [getattr(device, name) for name in NEWER_CONTENT],
+            [(reference.keyword, reference.target) for assembly in device.extended_assemblies.values()
+             for reference in (assembly.size, *(member.reference for member in assembly.members))
+             if isinstance(reference, Reference)])
+
+
+def assert_exact(text: str, carried: Carried, message: str = "") -> bool:
+    """Analyse ``text`` with what ``carried`` holds: it answers as a fresh analysis, and so does the
+    analysis it handed hover and completion first; True when that one was made before the whole
+    model (an entry's record made again: lsp.analysis)."""
+    handed: list[Analysis] = []
+    analysis = analyse(text, carried=carried, readable=handed.append)
+    fresh = analyse(text)
+    assert answers(analysis) == answers(fresh), message or text
+    assert readable_answers(handed[0]) == readable_answers(fresh), message or text
+    return handed[0] is not analysis
+
+
 def edited(text: str, rng: random.Random, *, inside_a_line: bool = True) -> str:
     """``text`` with one character typed, replaced or deleted somewhere (a line break too, unless
     ``inside_a_line``)."""
@@ -67,7 +99,7 @@ def assert_incremental_is_exact(text: str, seed: int, edits: int, *, inside_a_li
     rng = random.Random(seed)
     for _ in range(edits):
         text = edited(text, rng, inside_a_line=inside_a_line)
-        assert answers(analyse(text, carried=carried)) == answers(analyse(text)), text
+        assert_exact(text, carried, text)
     return carried
 
 
@@ -93,7 +125,7 @@ def test_any_sequence_of_edits_inside_lines_answers_as_a_fresh_analysis(edits):
             continue
         cut = position + (kind != "i")
         text = text[:position] + ("" if kind == "d" else typed) + text[cut:]
-        assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+        assert_exact(text, carried)
 
 
 def largest_real_file() -> str:
@@ -138,7 +170,7 @@ def test_lines_typed_or_deleted_move_the_entries_after_them_and_everything_made_
     entries, records = carried.read, carried.memo.misses
     checks = carried.checks.misses
     for version in (text, EXAMPLE, text):  # there and back: the entries of three texts, moved twice
-        assert answers(analyse(version, carried=carried)) == answers(analyse(version))
+        assert_exact(version, carried)
         # read again: the line typed back, and the entry after it when it begins alike ("ProdCode",
         # "ProdType"), where the changed text runs into it
         assert carried.reused + carried.read == entries - (PRODUCT_CODE_LINE not in version) and carried.read <= 2
@@ -188,11 +220,11 @@ def test_blank_lines_typed_or_deleted_between_statements_move_the_last_model(nam
     carried = Carried()
     analyse(base, carried=carried)
     entries = carried.read
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text)), name
+    assert assert_exact(text, carried, name) == (splice == "respaced")  # hover answered at once
     assert carried.splice == splice, name
     if splice:
         assert (carried.read, carried.reused) == (0, entries)
-    assert answers(analyse(base, carried=carried)) == answers(analyse(base))  # and back again
+    assert_exact(base, carried)  # and back again
 
 
 def test_an_entry_after_a_blank_line_typed_below_its_leading_comment_is_re_used_later():
@@ -203,7 +235,7 @@ def test_an_entry_after_a_blank_line_typed_below_its_leading_comment_is_re_used_
     analyse(text, carried=carried)
     assert carried.splice == "respaced"
     text = text.replace("[Device]", "[DEVICE]")  # read whole: the entry stands where its places say
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert_exact(text, carried)
     assert carried.splice == "" and carried.reused == entries
 
 
@@ -212,11 +244,11 @@ def test_a_line_typed_before_a_re_read_entry_with_a_leading_comment_moves_both()
     carried = Carried()
     analyse(COMMENTED, carried=carried)
     text = COMMENTED.replace("/eds/io_adapter", "/eds/io-adapter")
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert_exact(text, carried)
     assert carried.splice == "reread"
     for moved in ("\n" + text, "\n\n$ x\n" + text, text.replace("        $ where", "\n        $ where"),
                   text.replace("[Device]", "\n[Device]")):
-        assert answers(analyse(moved, carried=carried)) == answers(analyse(moved))
+        assert_exact(moved, carried)
 
 
 @settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -238,7 +270,7 @@ def test_any_sequence_of_blank_lines_and_keystrokes_answers_as_a_fresh_analysis(
             position = where % len(lines[line].rstrip("\r\n") or " ")
             lines[line] = lines[line][:position] + (newline if kind == "line break" else typed) + lines[line][position:]
         text = "".join(lines)
-        assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+        assert_exact(text, carried)
 
 
 def test_a_new_line_in_an_entry_keeps_the_others_and_every_sixteenth_edit_reads_the_whole_text_again():
@@ -246,10 +278,10 @@ def test_a_new_line_in_an_entry_keeps_the_others_and_every_sixteenth_edit_reads_
     analyse(EXAMPLE, carried=carried)
     entries = carried.read
     line_break = EXAMPLE.replace("ProdCode = 1001;", "ProdCode =\n 1001;")
-    assert answers(analyse(line_break, carried=carried)) == answers(analyse(line_break))
+    assert_exact(line_break, carried)
     assert carried.read == 1 and carried.reused == entries - 1
     text = EXAMPLE
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text))  # a line fewer
+    assert_exact(text, carried)  # a line fewer
     assert carried.read == 1
     carried = Carried()
     analyse(text, carried=carried)
@@ -306,7 +338,7 @@ def test_an_edit_inside_one_entry_reads_only_that_entry_and_answers_as_a_fresh_a
     analyse(EXAMPLE, carried=carried)
     assert find in EXAMPLE
     text = EXAMPLE.replace(find, replace, 1)
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert_exact(text, carried)
     assert (carried.splice == "reread") == reread
     assert carried.read == 1 or not reread
     back = analyse(EXAMPLE, carried=carried)  # and back again
@@ -321,12 +353,64 @@ def test_a_keystroke_in_a_dense_section_reads_only_its_entry():
     for typed in "12345":  # a value one character longer each time: the entries after it move
         text = text.replace('"P400"', f'"P400{typed}"') if typed == "1" else text.replace(
             f'"P400{int(typed) - 1}"', f'"P400{typed}"')
-        assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+        assert assert_exact(text, carried)  # and hover answered before the whole model was made
         assert carried.splice == "reread" and carried.read == 1
     # an edit of a leading comment is read whole; every entry but the one it leads is the one read before
     text = text.replace("$ parameter 600\n", "$ parameter 600!\n")
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert_exact(text, carried)
     assert carried.splice == "" and carried.reused == 800
+
+
+def test_hover_waits_for_the_whole_model_when_a_parameter_s_data_type_changes():
+    # the data type types the parameter's EnumN keys: USINT has no 300, UINT has
+    base = EXAMPLE.replace('Enum3 = 0,"Clear",', 'Enum3 = 300,"Far", 0,"Clear",')
+    carried = Carried()
+    analyse(base, carried=carried)
+    typed = base.replace("values\n                0xC6,", "values\n                0xC7,")
+    assert not assert_exact(typed, carried)
+    assert carried.splice == "reread"
+    assert assert_exact(typed.replace('"Input Filter"', '"Input filter"'), carried)  # Param2's name: at once
+
+
+def test_hover_answers_at_once_for_an_entry_that_shares_its_first_line():
+    # Enum3's span (it pairs with Param3) stands before Param4's on their line
+    base = EXAMPLE.replace('"Use fault value";\n        Param4 =', '"Use fault value"; Param4 =')
+    carried = Carried()
+    analyse(base, carried=carried)
+    assert assert_exact(base.replace('"Temperature Limit"', '"Temperature limit"'), carried)
+
+
+def test_hover_answers_at_once_for_a_parameter_an_extended_assembly_names():
+    # AssemExa101 (the typed view of the newer content) has Param2 for its size and Param4 for members
+    base = (REPO / "corpus" / "cip" / "assembly_exa_clean.eds").read_text(encoding="ascii")
+    carried = Carried()
+    analyse(base, carried=carried)
+    for find, typed in (('"Port data"', '"Port Data"'), ('"Input size"', '"Input Size"')):
+        base = base.replace(find, typed)
+        assert assert_exact(base, carried)
+
+
+def test_hover_waits_for_the_whole_model_after_an_analysis_that_stopped_half_way():
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    steps = iter([False, True])  # stopped just after reading (a newer text came)
+    first = EXAMPLE.replace('"Input Filter"', '"Input filter"')
+    with pytest.raises(Superseded):
+        analyse(first, carried=carried, superseded=lambda: next(steps))
+    second = first.replace('"Temperature Limit"', '"Temperature limit"')
+    assert not assert_exact(second, carried)  # the last whole analysis is of a text before the first
+    assert carried.splice == "reread"
+
+
+def test_a_size_adder_deleted_leaves_its_proxy_parameter_without_one():
+    param1 = EXAMPLE[EXAMPLE.index("        Param1 ="):EXAMPLE.index("        Param2 =")]
+    proxy = param1.replace("Param1 =", "ProxyParam1 =") + "        ProxyParamSizeAdder1 = 1,2,3;\n"
+    base = EXAMPLE.replace("        Param2 =", proxy + "        Param2 =")
+    carried = Carried()
+    analyse(base, carried=carried)
+    assert carried.last is not None and carried.last.device.parameters["ProxyParam1"].size_adder is not None
+    assert not assert_exact(base.replace("        ProxyParamSizeAdder1 = 1,2,3;\n", ""), carried)
+    assert carried.last.device.parameters["ProxyParam1"].size_adder is None
 
 
 @settings(max_examples=300, deadline=None)
@@ -371,10 +455,10 @@ def test_edits_of_a_text_the_reader_normalises_answer_as_a_fresh_analysis(name, 
     carried = Carried()
     analyse(variant, carried=carried)
     text = variant.replace("$ decimal places", "$ decimal placez", 1)
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert_exact(text, carried)
     # inside an entry: that entry alone is read again, unless a byte order mark makes the text not ASCII
     text = text.replace("$ Data Type: UDINT", "$ Data Type: UINT", 1)
-    assert answers(analyse(text, carried=carried)) == answers(analyse(text))
+    assert_exact(text, carried)
     assert (carried.splice == "reread") == (not variant.startswith("\ufeff"))
     assert_incremental_is_exact(variant, 3, 25)
     assert_incremental_is_exact(variant, 4, 25, inside_a_line=False)
@@ -383,7 +467,7 @@ def test_edits_of_a_text_the_reader_normalises_answer_as_a_fresh_analysis(name, 
 def test_a_byte_order_mark_typed_at_the_start_is_read_whole():
     carried = Carried()
     analyse(EXAMPLE, carried=carried)
-    assert answers(analyse("\ufeff" + EXAMPLE, carried=carried)) == answers(analyse("\ufeff" + EXAMPLE))
+    assert_exact("\ufeff" + EXAMPLE, carried)
     assert carried.splice == ""
 
 

@@ -19,15 +19,16 @@ import gc
 import traceback
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import edsconv
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.source import as_read, split_lines
 from edsconv.eds.syntax import EdsFile, Entry
-from edsconv.lsp.incremental import Carried, reread, respaced, reuse_entries
+from edsconv.lsp.incremental import Carried, EntryReplaced, LinesMoved, reread, respaced, reuse_entries
 from edsconv.model import Device
-from edsconv.model.references import Occurrence, definitions, occurrences
+from edsconv.model.build import build, with_entry_rebuilt
+from edsconv.model.references import Occurrence, definitions, occurrences, spans_moved, with_entry_spans
 from edsconv.suppress import Directives, directive_comments
 
 #: Seconds without an analysis after which the garbage of the earlier ones is collected (see :class:`Analyses`)
@@ -81,13 +82,13 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
     """
     from edsconv.checks import Context, load_checks
     from edsconv.eds.reader import paused_gc
-    from edsconv.model.build import build
 
     def step() -> None:
         if superseded():
             raise Superseded
 
     step()
+    before = carried.eds if carried is not None else None
     with paused_gc():  # a splice makes many objects too (respaced: the moved spans)
         spliced = (reread(carried, text) or respaced(carried, text)) if carried is not None else None
     lines, eds = spliced or (tuple(split_lines(text)), edsconv.parse(text, path))
@@ -98,6 +99,12 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
             if carried is not None:
                 if spliced is None:
                     reuse_entries(carried, text, as_read(text), lines, eds)
+                last, edit = carried.last, carried.edit
+                if readable is not None and edit is not None and last is not None and last.eds is before:
+                    early = _answered_early(last, edit, version, text, lines, eds)
+                    if early is not None:
+                        readable(early)
+                carried.settle()
                 memo = carried.memo
                 memo.start()
             device = build(eds, memo)
@@ -123,10 +130,31 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
         except Superseded:
             raise
         except Exception as error:  # noqa: BLE001 - the editor gets a diagnostic, the server keeps running
+            if carried is not None:
+                carried.last = None
             return _failed(text, version, path, lines, eds, error)
     diagnostics.sort(key=lambda d: (d.line, d.column))
     analysis.diagnostics = diagnostics
+    if carried is not None:
+        carried.last = analysis
     return analysis
+
+
+def _answered_early(last: Analysis, edit: EntryReplaced | LinesMoved, version: int | None, text: str,
+                    lines: tuple[str, ...], eds: EdsFile) -> Analysis | None:
+    """The models and references of ``text``, whose syntax model ``eds`` is ``last``'s after ``edit``,
+    made from ``last``'s: what hover, completion and navigation answer from while the whole analysis is
+    made. Where one entry was read again, when its record is all that changed
+    (:func:`edsconv.model.build.with_entry_rebuilt`), else None; where blank lines moved the nodes after
+    them, ``last``'s model and the places naming entries, on their new lines."""
+    if isinstance(edit, LinesMoved):
+        spans = spans_moved(last.spans, edit.first_line, edit.moved) if edit.moved else last.spans
+        return Analysis(version, text, lines, eds, replace(last.device, eds=eds), [], spans, last.definitions)
+    device = with_entry_rebuilt(last.device, eds, edit.section, edit.old, edit.new)
+    if device is None or last.definitions.get(edit.new.keyword) is not edit.old:
+        return None
+    spans = with_entry_spans(last.spans, device, edit.section, edit.old, edit.new, lines)
+    return Analysis(version, text, lines, eds, device, [], spans, {**last.definitions, edit.new.keyword: edit.new})
 
 
 def _failed(text: str, version: int | None, path: str | None, lines: tuple[str, ...], eds: EdsFile,

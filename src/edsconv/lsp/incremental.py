@@ -36,6 +36,7 @@ import dataclasses
 import re
 from dataclasses import dataclass, field
 from itertools import islice
+from typing import TYPE_CHECKING
 
 from edsconv.checks import CheckMemo
 from edsconv.diagnostics import Diagnostic
@@ -45,6 +46,9 @@ from edsconv.eds.runs import comments_in
 from edsconv.eds.source import LineIndex, as_read, newline_of, split_lines
 from edsconv.eds.syntax import EdsFile, Entry
 from edsconv.model.memo import EntryMemo
+
+if TYPE_CHECKING:
+    from edsconv.lsp.analysis import Analysis
 
 #: Incremental analyses between two from scratch: each keeps alive, at most, the text of one entry's
 #: last edit (a re-used entry points into the text it was read from), so this bounds that memory
@@ -61,6 +65,25 @@ _REST_OF_LINE = re.compile(r"[ \t\f\v\x1a]*+(?:\$[^\n]*+)?(?:\n|\Z)")
 _BLANK_LINES = re.compile(r"(?:[ \t]*(?:\r\n|\r|\n))*")
 #: Diagnostics the reader gives an entry at its start whatever its fields say
 _ABOUT_THE_KEYWORD = frozenset({DUPLICATE_ENTRY.code, ENTRY_OUTSIDE_SECTION.code})
+
+
+@dataclass(frozen=True, slots=True)
+class EntryReplaced:
+    """An edit inside one entry's fields (:func:`reread`): the entry of section ``section`` read again,
+    and the one read in its place."""
+
+    section: str
+    old: Entry
+    new: Entry
+
+
+@dataclass(frozen=True, slots=True)
+class LinesMoved:
+    """Whole blank lines typed or deleted between statements (:func:`respaced`): the lines of the last
+    text from ``first_line`` on moved ``moved`` lines (fewer, when negative)."""
+
+    first_line: int
+    moved: int
 
 
 #: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
@@ -94,15 +117,32 @@ class Carried:
     #: entries re-used by the last analysis, and entries read anew (for the tests and benchmarks)
     reused: int = 0
     read: int = 0
-    #: how the last analysis made its syntax model of the last one: "reread" (:func:`reread`), "respaced"
-    #: (:func:`respaced`), else "" (read whole)
-    splice: str = ""
+    #: what the last analysis changed of the syntax model before it, when it made its own of that one
+    #: (None: it read its text whole)
+    edit: EntryReplaced | LinesMoved | None = None
+    #: the last analysis that ran to its end (:func:`edsconv.lsp.analysis.analyse`)
+    last: Analysis | None = None
+    #: the line moves the memos have yet to follow, in order (:meth:`settle`)
+    pending: list[LinesMoved] = field(default_factory=list)
+
+    def settle(self) -> None:
+        """Make what the memos hold follow the lines the edits since they were last read moved: done
+        just before they are read, after hover has had its answer (:func:`edsconv.lsp.analysis.analyse`)."""
+        for move in self.pending:
+            self.memo.lines_moved(move.first_line, move.moved)
+            self.checks.lines_moved(move.first_line, move.moved)
+        self.pending.clear()
+
+    @property
+    def splice(self) -> str:
+        """How the last analysis made its syntax model: "reread", "respaced", or "" (read whole)."""
+        return "reread" if isinstance(self.edit, EntryReplaced) else "respaced" if self.edit else ""
 
     def keep(self, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile, index: LineIndex | None,
-             splice: str) -> None:
+             edit: EntryReplaced | LinesMoved | None) -> None:
         """Describe ``raw`` (read as ``text``) from now on (``places`` already does)."""
         self.raw, self.text, self.lines = raw, text, lines
-        self.eds, self.index, self.starts, self.splice = eds, index, list(self.places), splice
+        self.eds, self.index, self.starts, self.edit = eds, index, list(self.places), edit
 
 
 def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
@@ -135,30 +175,33 @@ def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...],
                 entries[index] = entry = old[0]
                 reused += 1
                 if moved and lead >= end:
-                    _first_after(firsts, entry, lead != offset)
+                    if lead == offset:
+                        firsts.setdefault(entry.source, entry.offset)  # type: ignore[arg-type]  # read entries have one
+                    else:
+                        _first_after(firsts, entry)
             places[offset] = (entry, entry_end, lead, number, index)
     if firsts:
         _lines_moved(carried, firsts, carried.index.position(end - shift)[0], moved)  # type: ignore[union-attr]
     carried.steps = carried.steps + 1 if reusing else 0
     carried.places = places
     carried.reused, carried.read = reused, len(places) - reused
-    carried.keep(raw, text, lines, eds, index_of(eds), "")
+    carried.keep(raw, text, lines, eds, index_of(eds), None)
 
 
-def _first_after(firsts: dict[LineIndex, int], entry: Entry, with_leading_comments: bool) -> None:
-    """Note where ``entry``, the next re-used entry after an edit, starts in the texts it was read from
-    (its leading comments may come from an older text than the entry: :func:`reread`), unless an earlier
-    node of that text is noted. Either offset is right for both: they stand before the edit that read
-    the entry again, where the two texts are the same."""
+def _first_after(firsts: dict[LineIndex, int], entry: Entry) -> None:
+    """Note where ``entry``, the next re-used entry after an edit, with leading comments, starts in the
+    texts it was read from (its comments may come from an older text than the entry: :func:`reread`),
+    unless an earlier node of that text is noted. Its first comment's offset is right for both: it
+    stands before the edit that read the entry again, where the two texts are the same."""
     lead = entry.lead_offset
     firsts.setdefault(entry.source, lead)  # type: ignore[arg-type]  # read entries have one
-    if with_leading_comments:
-        firsts.setdefault(entry.leading_comments[0].source, lead)  # type: ignore[arg-type]
+    firsts.setdefault(entry.leading_comments[0].source, lead)  # type: ignore[arg-type]
 
 
 def _lines_moved(carried: Carried, firsts: dict[LineIndex, int], first_line: int, moved: int) -> None:
     """An edit added ``moved`` lines (removed, when negative) before line ``first_line`` of the last
-    text: the nodes after it, read from older texts, and what the memos made of them, say their new lines.
+    text: the nodes after it, read from older texts, say their new lines, and what the memos made of
+    them will (:meth:`Carried.settle`).
 
     The nodes before and after the edit that were read from one text keep their order in it, so
     numbering the lines of that text from the first one after the edit on ``moved`` more (``firsts``:
@@ -166,8 +209,7 @@ def _lines_moved(carried: Carried, firsts: dict[LineIndex, int], first_line: int
     negative lie between the two groups, on lines the edit removed (:meth:`LineIndex.lines_moved`)."""
     for index, offset in firsts.items():
         index.lines_moved(offset, moved)
-    carried.memo.lines_moved(first_line, moved)
-    carried.checks.lines_moved(first_line, moved)
+    carried.pending.append(LinesMoved(first_line, moved))
 
 
 def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
@@ -223,7 +265,7 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     carried.steps += 1
     carried.reused, carried.read = len(carried.places) - 1, 1
     edited = _with_entry(eds, number, position, spliced)
-    carried.keep(raw, text, lines, edited, new_index, "reread")
+    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(edited.holders()[number].name, entry, spliced))
     return lines, edited
 
 
@@ -268,7 +310,7 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     carried.places = _shifted(carried.places, at, new_end - old_end, start)
     carried.steps += 1
     carried.reused, carried.read = len(carried.places), 0
-    carried.keep(raw, text, lines, moved_eds, new_index, "respaced")
+    carried.keep(raw, text, lines, moved_eds, new_index, LinesMoved(first_moved_line, moved))
     return lines, moved_eds
 
 
@@ -285,10 +327,10 @@ def _nodes_after(carried: Carried, eds: EdsFile, at: int, start: int, first_line
     places = carried.places
     for offset in islice(carried.starts, at, None):
         entry, _, lead, _, _ = places[offset]
-        if lead >= start:
-            _first_after(firsts, entry, lead != offset)
-        else:  # its leading comments stand before the edit
+        if lead == offset or lead < start:  # no leading comments, or they stand before the edit
             firsts.setdefault(entry.source, entry.offset)  # type: ignore[arg-type]  # read entries have one
+        else:
+            _first_after(firsts, entry)
     for section in eds.holders():
         for node in (*section.leading_comments, section, *section.comments):
             if node.source is not None and node.line >= first_line:

@@ -42,6 +42,7 @@ from edsconv.model import (
     Unreadable,
 )
 from edsconv.model.cip_build import attach
+from edsconv.model.cip_build import resolve as resolve_view
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
 from edsconv.model.memo import MISSING, EntryMemo, Kind
 from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
@@ -196,14 +197,18 @@ COMMENT_NOTES = Kind("comments")
 
 
 class _Builder:
-    def __init__(self, eds: EdsFile, memo: EntryMemo | None = None) -> None:
+    def __init__(self, eds: EdsFile, memo: EntryMemo | None = None, section_of: dict[int, str] | None = None) -> None:
         self.eds = eds
         self.device = Device(eds=eds)
         self.diagnostics = self.device.diagnostics
         self.enums: list[tuple[str, Entry]] = []
         self.size_adders: list[Entry] = []
-        self.section_of = {id(entry): section.name for section in eds.sections for entry in section.entries}
+        #: the section of each entry this builder makes records of, by the entry's identity
+        self.section_of = section_of if section_of is not None else \
+            {id(entry): section.name for section in eds.sections for entry in section.entries}
         self.memo = memo
+        #: the parameters the memo held, whose enum and size adder are those of an earlier build
+        self.reused_parameters: list[Parameter] = []
         #: the erroneous values of the record being made for the memo
         self.erroneous_made: list[tuple[tuple[str, str, int], str]] | None = None
 
@@ -225,8 +230,8 @@ class _Builder:
             self.diagnostics += made.diagnostics
             self.device.unreadable += made.unreadable
             self.device.erroneous.update(made.erroneous)
-            if isinstance(made.record, Parameter):  # set by attach_enums_and_adders, from other entries
-                made.record.enum = made.record.size_adder = None
+            if isinstance(made.record, Parameter):  # attach_enums_and_adders sets these anew, from other entries
+                self.reused_parameters.append(made.record)
         return made.record
 
     # --- diagnostics and field conversion --------------------------------------------
@@ -330,8 +335,7 @@ class _Builder:
         self.collect_unparsed()
         self.attach_enums_and_adders()
         attach(self.device)  # the typed view of the content beyond the 2003 text (model.cip)
-        for ref in iter_references(self.device):
-            ref.target = self.device.resolve(ref.keyword)
+        _resolve(self.device)
         return self.device
 
     def check_keyword_number(self, entry: Entry) -> None:
@@ -439,7 +443,13 @@ class _Builder:
         return plain(value) if type_name == "plain" else self.value(entry, index, type_name)
 
     def attach_enums_and_adders(self) -> None:
+        """Each parameter's enum (its first EnumN) and size adder (its last ProxyParamSizeAdderN).
+
+        A parameter an earlier build made (the memo's) keeps the ones that build gave it until they are
+        set here, never None meanwhile: the language server answers from an analysis that shares it
+        while this one is made (:func:`with_entry_rebuilt`)."""
         parameters = self.device.parameters
+        enums: dict[int, tuple[Parameter, dict[int, str]]] = {}
         for family, entry in self.enums:
             number = tables.instance_number(entry.keyword)
             parameter = parameters.get(f"{family}{number}")
@@ -450,13 +460,23 @@ class _Builder:
                 text = self.value(entry, index + 1, "EDS_Char_Array")
                 if key is not None:
                     enum[key] = text
-            if parameter is not None and parameter.enum is None:
-                parameter.enum = enum
+            if parameter is not None:
+                enums.setdefault(id(parameter), (parameter, enum))
+        adders: dict[int, tuple[Parameter, tuple]] = {}
         for entry in self.size_adders:
             parameter = parameters.get(f"ProxyParam{tables.instance_number(entry.keyword)}")
             if parameter is not None:
-                parameter.size_adder = tuple(self.param_value(entry, i, parameter, a, False)
-                                             for i, a in enumerate(("minimum", "maximum", "default")))
+                adders[id(parameter)] = (parameter, tuple(self.param_value(entry, i, parameter, a, False)
+                                                          for i, a in enumerate(("minimum", "maximum", "default"))))
+        for parameter in self.reused_parameters:
+            if parameter.enum is not None and id(parameter) not in enums:
+                parameter.enum = None
+            if parameter.size_adder is not None and id(parameter) not in adders:
+                parameter.size_adder = None
+        for parameter, enum in enums.values():
+            parameter.enum = enum
+        for parameter, adder in adders.values():
+            parameter.size_adder = adder
 
     # --- [Groups] ------------------------------------------------------------------------
     def group(self, entry: Entry, spec: tables.EntrySpec) -> None:
@@ -585,6 +605,47 @@ def spelling(value: Value) -> str:
     if isinstance(value, Group):
         return "{" + ",".join("" if f.value is None else spelling(f.value) for f in value.fields) + "}"
     return value.raw
+
+
+def _resolve(device: Device) -> None:
+    """Point every reference of the model at the record it names."""
+    for ref in iter_references(device):
+        ref.target = device.resolve(ref.keyword)
+
+
+#: The sections each of whose entries (the record families) makes one record of a table of the device
+_RECORD_TABLES = {"Params": "parameters", "Assembly": "assemblies", "Connection Manager": "connections"}
+
+
+def with_entry_rebuilt(device: Device, eds: EdsFile, section: str, old: Entry, new: Entry) -> Device | None:
+    """The model of ``eds``, which ``device``'s syntax model became when ``new`` took the place of
+    ``old`` (an entry of ``section`` with the same keyword), where the record ``old`` made is all that
+    can change: ``device`` with that record made again from ``new`` and every reference (of the
+    typed view of the newer content too, which other entries make) resolved again; a parameter keeps
+    the enum and size adder that other entries gave it when its data type, which types them, stays.
+    None otherwise (an entry that makes no record of its own, or not the one in the table, a
+    parameter whose data type changed).
+
+    What the language server answers hover and completion from while the whole model is made again
+    (:mod:`edsconv.lsp.analysis`): its findings (diagnostics, unreadable and erroneous values, comment
+    notes) are still ``device``'s, and what reads them waits for the whole build.
+    """
+    table_name, spec = _RECORD_TABLES.get(section), tables.entry_spec(section, new.keyword)
+    table = getattr(device, table_name) if table_name is not None else {}
+    known = table.get(new.keyword)
+    if spec is None or known is None or known.entry is not old:
+        return None
+    builder = _Builder(eds, section_of={id(new): section})
+    make = {"Params": builder.parameter, "Assembly": builder.assembly, "Connection Manager": builder.connection}
+    record = make[section](new, spec)
+    if isinstance(record, Parameter):
+        if record.data_type != known.data_type:
+            return None
+        record.enum, record.size_adder = known.enum, known.size_adder
+    rebuilt = replace(device, eds=eds, **{table_name: {**table, new.keyword: record}})  # type: ignore[arg-type]
+    _resolve(rebuilt)
+    resolve_view(rebuilt)  # the typed view is made of other entries: only its references may name the record
+    return rebuilt
 
 
 def build(eds: EdsFile, memo: EntryMemo | None = None) -> Device:

@@ -286,30 +286,6 @@ class _Builder:
             text = generic.values[0] if generic.values else None
             self.device.icon_contents = decode_icon(text.text) if isinstance(text, String) else None
 
-    def resolve(self) -> None:
-        device = self.device
-        for assembly in device.extended_assemblies.values():
-            for member in assembly.members:
-                if isinstance(member.reference, Reference):
-                    member.reference.target = device.resolve(member.reference.keyword)
-            if isinstance(assembly.size, Reference):
-                assembly.size.target = device.resolve(assembly.size.keyword)
-        for record in device.object_classes.values():
-            for description in record.service_descriptions:
-                for reference in (description.request, description.response):
-                    if reference is not None:
-                        reference.target = device.resolve(reference.keyword)
-        if device.additions is not None:
-            named = (*(device.additions.default_safety_connections or ()), device.additions.safety_cfg_assembly)
-            for reference in named:
-                if reference is not None:
-                    reference.target = device.resolve(reference.keyword)
-        if device.devicenet is not None:
-            for mode in device.devicenet.modes.values():
-                for reference, data in ((mode.default_input, device.devicenet.inputs),
-                                        (mode.default_output, device.devicenet.outputs)):
-                    if reference is not None:
-                        reference.target = data.get(reference.keyword)
 
 
 #: The sections whose single entries land in :class:`Additions`.
@@ -376,8 +352,34 @@ def attach(device: Device) -> Device:
     builder = _Builder(device)
     for name, table, generic, spec in newer_entries(device):
         builder.entry(name, table, generic, spec)
-    builder.resolve()
+    resolve(device)
     return device
+
+
+def resolve(device: Device) -> None:
+    """Point the references of the typed view at the records of ``device`` they name."""
+    for assembly in device.extended_assemblies.values():
+        for member in assembly.members:
+            if isinstance(member.reference, Reference):
+                member.reference.target = device.resolve(member.reference.keyword)
+        if isinstance(assembly.size, Reference):
+            assembly.size.target = device.resolve(assembly.size.keyword)
+    for record in device.object_classes.values():
+        for description in record.service_descriptions:
+            for reference in (description.request, description.response):
+                if reference is not None:
+                    reference.target = device.resolve(reference.keyword)
+    if device.additions is not None:
+        named = (*(device.additions.default_safety_connections or ()), device.additions.safety_cfg_assembly)
+        for reference in named:
+            if reference is not None:
+                reference.target = device.resolve(reference.keyword)
+    if device.devicenet is not None:
+        for mode in device.devicenet.modes.values():
+            for reference, data in ((mode.default_input, device.devicenet.inputs),
+                                    (mode.default_output, device.devicenet.outputs)):
+                if reference is not None:
+                    reference.target = data.get(reference.keyword)
 
 
 @functools.cache

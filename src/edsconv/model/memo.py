@@ -38,15 +38,16 @@ class EntryMemo:
     holds alive)."""
 
     def __init__(self) -> None:
-        self._known: dict[tuple[Kind, int], tuple[object, object, Any]] = {}
-        self._used: dict[tuple[Kind, int], tuple[object, object, Any]] = {}
+        #: by kind (so that moving lines visits only the kinds that hold them), then by the node's identity
+        self._known: dict[Kind, dict[int, _Stored]] = {}
+        self._used: dict[Kind, dict[int, _Stored]] = {}
         self._complete = True
         self.hits = self.misses = 0
 
     def start(self) -> None:
         """A new version: what the last one used is what is known."""
         # a version that stopped half way (superseded) used only part of what is known: keep both
-        self._known = self._used if self._complete else {**self._known, **self._used}
+        self._known = self._used if self._complete else _merged(self._known, self._used)
         self._used, self._complete = {}, False
 
     def finish(self) -> None:
@@ -54,23 +55,41 @@ class EntryMemo:
 
     def get(self, kind: Kind, node: object, context: object) -> Any:
         """What was made of ``node`` in ``context`` (and keeps it for the next version), else MISSING."""
-        key = (kind, id(node))
-        found = self._known.get(key)
+        known = self._known.get(kind)
+        found = known.get(id(node)) if known is not None else None
         if found is None or found[0] is not node or found[1] != context:
             self.misses += 1
             return MISSING
         self.hits += 1
-        self._used[key] = found
+        used = self._used.get(kind)
+        if used is None:
+            used = self._used[kind] = {}
+        used[id(node)] = found
         return found[2]
 
     def put(self, kind: Kind, node: object, context: object, value: Any) -> None:
-        self._used[(kind, id(node))] = (node, context, value)
+        used = self._used.get(kind)
+        if used is None:
+            used = self._used[kind] = {}
+        used[id(node)] = (node, context, value)
 
     def lines_moved(self, first_line: int, delta: int) -> None:
         """The lines of the text from ``first_line`` on moved ``delta`` lines: every value the next version
         can find (:meth:`start`) says where its entry now stands (the values are in the last text's lines,
         and now in the next's)."""
-        known = self._used if self._complete else {**self._known, **self._used}
-        self._used = {key: (node, context, value if key[0].moved is None else key[0].moved(value, first_line, delta))
-                      for key, (node, context, value) in known.items()}
+        known = self._used if self._complete else _merged(self._known, self._used)
+        self._used = {kind: values if kind.moved is None else
+                      {key: (node, context, kind.moved(value, first_line, delta))
+                       for key, (node, context, value) in values.items()}
+                      for kind, values in known.items()}
         self._known, self._complete = {}, True
+
+
+#: A value with the node it was made of and the context it was made in
+_Stored = tuple[object, object, Any]
+
+
+def _merged(known: dict[Kind, dict[int, _Stored]],
+            used: dict[Kind, dict[int, _Stored]]) -> dict[Kind, dict[int, _Stored]]:
+    """What ``known`` and ``used`` hold, ``used``'s value where both hold one."""
+    return {kind: {**known.get(kind, {}), **used.get(kind, {})} for kind in known.keys() | used.keys()}

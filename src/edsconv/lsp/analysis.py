@@ -153,7 +153,8 @@ def _answered_early(last: Analysis, edit: EntryReplaced | LinesMoved, version: i
     device = with_entry_rebuilt(last.device, eds, edit.section, edit.old, edit.new)
     if device is None or last.definitions.get(edit.new.keyword) is not edit.old:
         return None
-    spans = with_entry_spans(last.spans, device, edit.section, edit.old, edit.new, lines)
+    moved = edit.lines.moved if edit.lines is not None else 0
+    spans = with_entry_spans(last.spans, device, edit.section, edit.old, edit.new, lines, moved)
     return Analysis(version, text, lines, eds, device, [], spans, {**last.definitions, edit.new.keyword: edit.new})
 
 

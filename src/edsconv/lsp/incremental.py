@@ -1,14 +1,14 @@
 """The analysis of a document's new text re-uses what did not change since its last text.
 
 A keystroke changes one entry of thousands. When it typed or deleted characters inside the
-fields of one entry of an ASCII text (no line break, nothing outside printable ASCII; any line
-ends, which the reader's offsets count as one character each) and the reader reads the
-new entry as a simple statement ending where the old one ended, only that entry is read
-again (:func:`reread`): the new syntax model is the last one with that entry replaced, and
-the lines and line index are the last ones with that line replaced. When it typed or deleted
-whole blank lines outside every entry (Enter at the end of a line, a blank line deleted), nothing
-is read: the last syntax model is the new one, every node after the edit moved to its new line
-(:func:`respaced`). Any other edit reads the new text whole, then every entry whose lines the
+fields of one entry of an ASCII text (printable ASCII and line ends; the reader's offsets count
+each line end as one character) and the reader reads the new entry as a simple statement
+ending where the old one ended, only that entry is read again (:func:`reread`): the new
+syntax model is the last one with that entry replaced, and the lines and line index are the
+last ones with its lines replaced (the nodes after it moved, when lines came or went). When
+it typed or deleted whole blank lines outside every entry (Enter at the end of a line, a blank
+line deleted), nothing is read: the last syntax model is the new one, every node after the edit
+moved to its new line (:func:`respaced`). Any other edit reads the new text whole, then every entry whose lines the
 edit did not touch is replaced by the very same :class:`~edsconv.eds.syntax.Entry` object of the
 last analysis (:func:`reuse_entries`). Either way the model (:class:`~edsconv.model.memo.EntryMemo`)
 and the checks (:class:`~edsconv.checks.CheckMemo`) find the records and diagnostics they made
@@ -21,8 +21,9 @@ the line and column of the text it was read from, through that text's line index
 that adds or removes lines moves the nodes after it: the index of each older text they were
 read from then numbers its lines from the first of them on that many more or fewer
 (:meth:`~edsconv.eds.source.LineIndex.lines_moved`), and the records, spans and diagnostics the
-memos hold move with them. Every :data:`FULL_READ_EVERY`-th edit is analysed from scratch,
-which lets go of the older texts that re-used entries still point into.
+memos hold move with them before they are next read (:meth:`Carried.settle`). Every
+:data:`FULL_READ_EVERY`-th edit is analysed from scratch, which lets go of the older texts that
+re-used entries still point into.
 
 The analyses of one document run one at a time (:class:`edsconv.lsp.analysis.Analyses`): moving
 an older text's lines changes what the analyses of the texts before this one answer, and no
@@ -56,9 +57,9 @@ FULL_READ_EVERY = 16
 #: Characters compared at a time when looking for where two texts start and stop differing
 _CHUNK = 1 << 16
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
-#: What an edit re-read as one entry may have typed or deleted: characters that neither break a line
-#: nor change how the text is decoded
-_INSIDE_A_LINE = re.compile(r"[\x20-\x7e\t]*")
+#: What an edit re-read as one entry may have typed or deleted: characters that do not change how the
+#: text is decoded
+_PRINTABLE = re.compile(r"[\x20-\x7e\t\r\n]*")
 #: The rest of an entry's last line when no other statement stands on it: blanks, perhaps a comment
 _REST_OF_LINE = re.compile(r"[ \t\f\v\x1a]*+(?:\$[^\n]*+)?(?:\n|\Z)")
 #: Whole lines of blanks, as an edit between statements types or deletes them (:func:`respaced`)
@@ -68,22 +69,23 @@ _ABOUT_THE_KEYWORD = frozenset({DUPLICATE_ENTRY.code, ENTRY_OUTSIDE_SECTION.code
 
 
 @dataclass(frozen=True, slots=True)
+class LinesMoved:
+    """Lines typed or deleted (:func:`respaced`, :func:`reread`): the lines of the last text from
+    ``first_line`` on moved ``moved`` lines (fewer, when negative)."""
+
+    first_line: int
+    moved: int
+
+
+@dataclass(frozen=True, slots=True)
 class EntryReplaced:
     """An edit inside one entry's fields (:func:`reread`): the entry of section ``section`` read again,
-    and the one read in its place."""
+    the one read in its place, and the lines after it moved when the edit typed or deleted line breaks."""
 
     section: str
     old: Entry
     new: Entry
-
-
-@dataclass(frozen=True, slots=True)
-class LinesMoved:
-    """Whole blank lines typed or deleted between statements (:func:`respaced`): the lines of the last
-    text from ``first_line`` on moved ``moved`` lines (fewer, when negative)."""
-
-    first_line: int
-    moved: int
+    lines: LinesMoved | None = None
 
 
 #: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
@@ -218,25 +220,29 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     fields (see the module).
 
     Exact because the reader, coming to that entry's start in the text it makes of ``raw``, reads it as
-    it does here, and then finds the text after it as it was; its other entries keep their places and
-    lines. The last text was ASCII and the edit typed nothing but printable ASCII, so the reader's text
-    (:func:`edsconv.eds.source.as_read`) is its last one with the same edit, each CR LF before it
-    counted as one character.
+    it does here, and then finds the text after it as it was; its other entries keep their places, and
+    the nodes after it their lines, or move with the lines the edit typed or deleted (:func:`_lines_moved`;
+    not where a finding's message names a line). The last text was ASCII and the edit typed nothing
+    but printable ASCII and line ends of the file's kind, no CR LF across its edges, so the reader's
+    text (:func:`edsconv.eds.source.as_read`) is its last one with the same edit, each CR LF counted
+    as one character.
     """
     eds, index, old_raw = carried.eds, carried.index, carried.raw
     if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
             or raw == old_raw:
         return None
     raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
-    if not (_INSIDE_A_LINE.fullmatch(old_raw, raw_start, raw_old_end)
-            and _INSIDE_A_LINE.fullmatch(raw, raw_start, raw_new_end)):
+    if not (_printable(old_raw, raw_start, raw_old_end) and _printable(raw, raw_start, raw_new_end)) \
+            or newline_of(raw) != eds.newline:
         return None
     old, text = carried.text, raw
     start, old_end, new_end = raw_start, raw_old_end, raw_new_end
-    if eds.newline != "\n":  # the reader's offsets count each CR LF before the edit as one character
+    if eds.newline != "\n":  # the reader's offsets count each CR LF as one character
         start -= old_raw.count("\r\n", 0, raw_start)
-        old_end, new_end = start + raw_old_end - raw_start, start + raw_new_end - raw_start
-        text = old[:start] + raw[raw_start:raw_new_end] + old[old_end:]
+        typed = as_read(raw[raw_start:raw_new_end])
+        old_end, new_end = start + len(as_read(old_raw[raw_start:raw_old_end])), start + len(typed)
+        text = old[:start] + typed + old[old_end:]
+    moved = text.count("\n", start, new_end) - old.count("\n", start, old_end)
     at = bisect.bisect_right(carried.starts, start) - 1
     if at < 0:
         return None
@@ -249,31 +255,54 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     keyword, body, entry_end = read
     rest = _REST_OF_LINE.match(text, entry_end)
     if keyword != entry.keyword or start < body or new_end > entry_end or entry_end != end + shift or rest is None \
-            or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(raw, text):
+            or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(raw, text) \
+            or moved and any(d.code in NAMING_A_LINE for d in eds.diagnostics):
         return None
-    new_index = index.edited(text, start, old_end, new_end)
+    lines = _lines_edited(carried.lines, index.position(start)[0] - 1, old_raw, raw, raw_start, raw_old_end)
+    new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
     spliced = Entry.unread(keyword, offset, entry_end, new_index)
     if entry.lead_offset != entry.offset:
         spliced.leading_comments = list(entry.leading_comments)
     for comment in comments_in(text, entry_end, rest.end(), new_index):
         spliced.attach_trailing_comment(comment)
-    line = new_index.position(start)[0] - 1
-    line_start = max(raw.rfind("\n", 0, raw_start), raw.rfind("\r", 0, raw_start)) + 1
-    lines = carried.lines[:line] + (raw[line_start:line_start + len(carried.lines[line]) + shift],) \
-        + carried.lines[line + 1:]
+    edited = _with_entry(eds, number, position, spliced)
+    lines_moved = None
+    if moved:
+        lines_moved = LinesMoved(index.position(end)[0] + 1, moved)  # the line after the entry's last
+        _lines_moved(carried, _nodes_after(carried, eds, at + 1, end, lines_moved.first_line),
+                     lines_moved.first_line, moved)
+        edited.diagnostics = [d.moved(lines_moved.first_line, moved) for d in edited.diagnostics]
     carried.places = _moved(carried.places, at, (spliced, entry_end, lead, number, position), shift)
     carried.steps += 1
     carried.reused, carried.read = len(carried.places) - 1, 1
-    edited = _with_entry(eds, number, position, spliced)
-    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(edited.holders()[number].name, entry, spliced))
+    section = edited.holders()[number].name
+    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, entry, spliced, lines_moved))
     return lines, edited
+
+
+def _printable(text: str, start: int, end: int) -> bool:
+    """Whether ``text[start:end]`` is printable ASCII and line ends, no CR LF standing across its edges."""
+    return _PRINTABLE.fullmatch(text, start, end) is not None \
+        and not (start > 0 and text[start - 1] == "\r" and text.startswith("\n", start)) \
+        and not (end > start and text[end - 1] == "\r" and text.startswith("\n", end))
+
+
+def _lines_edited(lines: tuple[str, ...], first: int, old_raw: str, raw: str, start: int,
+                  old_end: int) -> tuple[str, ...]:
+    """``lines`` (of ``old_raw``) made those of ``raw``, where ``old_raw[start:old_end]`` changed and the
+    rest stayed; ``first``: the 0-based line of ``start``."""
+    last = first + len(_LINE_BREAK.findall(old_raw, start, old_end))
+    line_start = max(raw.rfind("\n", 0, start), raw.rfind("\r", 0, start)) + 1
+    region_end = line_start + sum(map(len, lines[first:last + 1])) + len(raw) - len(old_raw)
+    return lines[:first] + tuple(split_lines(raw[line_start:region_end])) + lines[last + 1:]
 
 
 def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
     """The lines and syntax model of the editor's ``raw`` text when the edit typed or deleted nothing but
     whole blank lines, outside every entry (Enter at the end of a line, a blank line deleted): the last
     syntax model with every node after the edit on its new line (:func:`_lines_moved`); None for any
-    other edit, or a file with text the reader could not parse or a finding whose message names a line.
+    other edit, or in a file with text the reader could not parse (whose extent blank lines may change)
+    or with a finding whose message names a line.
 
     Exact because the reader makes nothing of blank lines between statements: they end no statement,
     and a comment keeps its owner (the statement whose last line it stands on, else the next one).
@@ -302,8 +331,7 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     moved = text.count("\n", start, new_end) - old.count("\n", start, old_end)
     firsts = _nodes_after(carried, eds, at, start, first_line)
     new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
-    lines = carried.lines[:first_line - 1] + tuple(split_lines(raw[raw_start:raw_new_end])) \
-        + carried.lines[first_moved_line - 1:]
+    lines = _lines_edited(carried.lines, first_line - 1, old_raw, raw, raw_start, raw_old_end)
     if moved:
         _lines_moved(carried, firsts, first_moved_line, moved)
     moved_eds = dataclasses.replace(eds, diagnostics=[d.moved(first_moved_line, moved) for d in eds.diagnostics])
@@ -322,7 +350,8 @@ def _blank_lines(text: str, start: int, end: int) -> bool:
 
 def _nodes_after(carried: Carried, eds: EdsFile, at: int, start: int, first_line: int) -> dict[LineIndex, int]:
     """Where the first node at or after offset ``start`` of the last text (line ``first_line``, the
-    ``at``-th entry and the entries after it) stands in the text it was read from, by that text's index."""
+    ``at``-th entry and the entries after it, headers, comments, unreadable statements) stands in the
+    text it was read from, by that text's index."""
     firsts: dict[LineIndex, int] = {}
     places = carried.places
     for offset in islice(carried.starts, at, None):
@@ -332,7 +361,8 @@ def _nodes_after(carried: Carried, eds: EdsFile, at: int, start: int, first_line
         else:
             _first_after(firsts, entry)
     for section in eds.holders():
-        for node in (*section.leading_comments, section, *section.comments):
+        unparsed = [node for _, item in section.unparsed for node in (*item.leading_comments, item, *item.comments)]
+        for node in (*section.leading_comments, section, *section.comments, *unparsed):
             if node.source is not None and node.line >= first_line:
                 firsts[node.source] = min(firsts.get(node.source, node.offset), node.offset)
     for comment in eds.trailing_comments:

@@ -112,15 +112,17 @@ def occurrences(eds: EdsFile, device: Device, lines: Sequence[str], memo: EntryM
 
 
 def with_entry_spans(spans: list[Occurrence], device: Device, section: str, old: Entry, new: Entry,
-                     lines: Sequence[str]) -> list[Occurrence]:
-    """``spans`` (of the model before ``new`` took the place of ``old``, on the same lines) with those
-    of ``old`` replaced by those of ``new``, a record's entry in ``device``
-    (:func:`edsconv.model.build.with_entry_rebuilt`): what :func:`occurrences` finds in the new model.
-    The spans are in text order: those of ``old`` follow any of another entry on its first line."""
+                     lines: Sequence[str], moved: int = 0) -> list[Occurrence]:
+    """``spans`` (of the model before ``new`` took the place of ``old``, from its first line on) with
+    those of ``old`` replaced by those of ``new``, a record's entry in ``device``
+    (:func:`edsconv.model.build.with_entry_rebuilt`), and those after it ``moved`` lines later: what
+    :func:`occurrences` finds in the new model. The spans are in text order: those of ``old`` follow
+    any of another entry on its first line."""
     start = bisect.bisect_left(spans, (old.line, old.column), key=_position)
     last = bisect.bisect_right(spans, old.end_line, key=_line_of)
     written = [reference for reference in iter_references(device) if reference.entry is new]
-    return [*spans[:start], *_entry_spans(section, new, new.keyword, written, lines), *spans[last:]]
+    after = spans_moved(spans[last:], old.end_line + 1, moved) if moved else spans[last:]
+    return [*spans[:start], *_entry_spans(section, new, new.keyword, written, lines), *after]
 
 
 def _line_of(span: Occurrence) -> int:

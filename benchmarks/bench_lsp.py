@@ -12,7 +12,9 @@ waits for typing to settle (CHANGE_DELAY) included. Hover and completion right
 after a change are timed from the didChange to the answer. "new line": the
 diagnostics after a blank line is typed at the top, and "(completion)" the
 completion right after it is deleted again: edits that move every line, every
-position the last analysis holds (edsconv.lsp.incremental.respaced).
+position the last analysis holds (edsconv.lsp.incremental.respaced). "keyword":
+the same for a character typed before the first entry's keyword and deleted
+again, edits that make the server read the whole text again (the worst case).
 Beside them, the time of one full re-check of the file in this process
 (``analyse``, warm, without what an earlier analysis left), which is what the
 server did per change before. Hover and definition: on every real
@@ -93,14 +95,42 @@ def one_character_change(uri: str, text: str, version: int) -> types.DidChangeTe
                                              [types.TextDocumentContentChangePartial(range=where, text=digit)])
 
 
-def line_break_change(uri: str, version: int, typed: bool) -> types.DidChangeTextDocumentParams:
-    """A blank line typed at the top of the file (``typed``) or deleted again: an edit that moves
-    every line."""
-    at = types.Position(0, 0)
-    where = types.Range(at, at if typed else types.Position(1, 0))
+def typed_or_deleted(uri: str, version: int, at: types.Position, text: str,
+                     typed: bool) -> types.DidChangeTextDocumentParams:
+    """``text`` typed at ``at`` (``typed``), or deleted again."""
+    lines = text.split("\n")
+    end = types.Position(at.line + len(lines) - 1, (at.character if len(lines) == 1 else 0) + len(lines[-1]))
+    where = types.Range(at, at if typed else end)
     return types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version=version, uri=uri),
                                              [types.TextDocumentContentChangePartial(range=where,
-                                                                                    text="\n" if typed else "")])
+                                                                                    text=text if typed else "")])
+
+
+def first_keyword(text: str) -> types.Position:
+    """Where the first entry's keyword starts: typing before it makes another keyword of it."""
+    line = next(number for number, content in enumerate(text.splitlines()) if "=" in content
+                and not content.lstrip().startswith("$"))
+    content = text.splitlines()[line]
+    return types.Position(line, len(content) - len(content.lstrip()))
+
+
+async def there_and_back(client: Client, uri: str, position: types.Position, version: int, repeat: int,
+                         at: types.Position, typed: str) -> tuple[float, float]:
+    """Median times from typing ``typed`` at ``at`` to its diagnostics, and from deleting it again to
+    the completion at ``position`` (which stands where it did once it is deleted)."""
+    diagnostics, completions = [], []
+    document = types.TextDocumentIdentifier(uri)
+    for number in range(version, version + 2 * repeat, 2):
+        start = time.perf_counter()
+        client.text_document_did_change(typed_or_deleted(uri, number, at, typed, True))
+        await client.next_diagnostics(uri)
+        diagnostics.append(time.perf_counter() - start)
+        start = time.perf_counter()
+        client.text_document_did_change(typed_or_deleted(uri, number + 1, at, typed, False))
+        await client.text_document_completion_async(types.CompletionParams(document, position))
+        completions.append(time.perf_counter() - start)
+        await client.next_diagnostics(uri)
+    return statistics.median(diagnostics), statistics.median(completions)
 
 
 async def change_latency(client: Client, path: Path, repeat: int) -> dict:
@@ -128,26 +158,17 @@ async def change_latency(client: Client, path: Path, repeat: int) -> dict:
         await client.text_document_completion_async(types.CompletionParams(document, position))
         completions.append(time.perf_counter() - start)
         await client.next_diagnostics(uri)
-    line_breaks, line_break_completions = [], []
     first = 2 + 3 * repeat
-    for line_version in range(first, first + 4 * repeat, 2):
-        for typed, timings in ((True, line_breaks), (False, line_break_completions)):  # a blank line, then none
-            start = time.perf_counter()
-            client.text_document_did_change(line_break_change(uri, line_version + (not typed), typed))
-            if timings is line_break_completions:  # the position stands where it did: the line is gone again
-                await client.text_document_completion_async(types.CompletionParams(document, position))
-                timings.append(time.perf_counter() - start)
-            await client.next_diagnostics(uri)
-            if timings is line_breaks:
-                timings.append(time.perf_counter() - start)
+    line_break = await there_and_back(client, uri, position, first, repeat, types.Position(0, 0), "\n")
+    keyword = await there_and_back(client, uri, position, first + 2 * repeat, repeat, first_keyword(text), "X")
     client.text_document_did_close(types.DidCloseTextDocumentParams(document))
     full, _ = best_of(repeat, analyse, text)
     return {"file": path.name, "bytes": path.stat().st_size, "open_to_diagnostics_s": opened,
             "change_to_diagnostics_s": statistics.median(changes), "change_to_diagnostics_max_s": max(changes),
             "hover_after_change_s": statistics.median(hovers),
             "completion_after_change_s": statistics.median(completions),
-            "line_break_to_diagnostics_s": statistics.median(line_breaks),
-            "completion_after_line_break_s": statistics.median(line_break_completions), "full_recheck_s": full}
+            "line_break_to_diagnostics_s": line_break[0], "completion_after_line_break_s": line_break[1],
+            "keyword_to_diagnostics_s": keyword[0], "completion_after_keyword_s": keyword[1], "full_recheck_s": full}
 
 
 async def request_latency(client: Client, files: list[Path], repeat: int) -> dict:
@@ -202,13 +223,14 @@ def main() -> None:
     print(f"after a one-character change (median of {arguments.repeat}; the {CHANGE_DELAY * 1000:.0f} ms pause "
           "included), beside one full re-check")
     print(f"  {'file':<34} {'bytes':>10} {'diagnostics':>12} {'(max)':>7} {'hover':>7} {'completion':>11} "
-          f"{'new line':>9} {'(completion)':>13} {'full re-check':>14}")
+          f"{'new line':>9} {'(completion)':>13} {'keyword':>8} {'(completion)':>13} {'full re-check':>14}")
     for change in result["change"]:
         ms = {key: f"{value * 1000:.0f} ms" for key, value in change.items() if key.endswith("_s")}
         print(f"  {change['file'][-34:]:<34} {change['bytes']:>10,} {ms['change_to_diagnostics_s']:>12} "
               f"{ms['change_to_diagnostics_max_s']:>7} {ms['hover_after_change_s']:>7} "
               f"{ms['completion_after_change_s']:>11} {ms['line_break_to_diagnostics_s']:>9} "
-              f"{ms['completion_after_line_break_s']:>13} {ms['full_recheck_s']:>14}")
+              f"{ms['completion_after_line_break_s']:>13} {ms['keyword_to_diagnostics_s']:>8} "
+              f"{ms['completion_after_keyword_s']:>13} {ms['full_recheck_s']:>14}")
     if requests is None:
         return
     print(f"{requests['requests']} references on {requests['files']} files (best of {arguments.repeat} each)")

@@ -22,6 +22,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field, replace
 
 import edsconv
+from edsconv.checks import CheckMemo
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.source import as_read, split_lines
 from edsconv.eds.syntax import EdsFile, Entry
@@ -80,7 +81,6 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
     ``carried`` is what the analysis of the document's last text left (:mod:`edsconv.lsp.incremental`):
     what the edit did not change is taken from it, and it is left for the next one.
     """
-    from edsconv.checks import Context, load_checks
     from edsconv.eds.reader import paused_gc
 
     def step() -> None:
@@ -99,11 +99,8 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
             if carried is not None:
                 if spliced is None:
                     reuse_entries(carried, text, as_read(text), lines, eds)
-                last, edit = carried.last, carried.edit
-                if readable is not None and edit is not None and last is not None and last.eds is before:
-                    early = _answered_early(last, edit, version, text, lines, eds)
-                    if early is not None:
-                        readable(early)
+                if readable is not None:
+                    _answer_early(carried, before, readable, version, text, lines, eds)
                 carried.settle()
                 memo = carried.memo
                 memo.start()
@@ -113,17 +110,7 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
                                 definitions(device))
             if readable is not None:
                 readable(analysis)
-            diagnostics = [*eds.diagnostics, *device.diagnostics]
-            checks = carried.checks if carried is not None else None
-            if checks is not None:
-                checks.bind(path)
-                checks.start()
-            context = Context(eds, device, checks)
-            for check in load_checks():
-                step()
-                diagnostics += check.run(context)
-            if checks is not None:
-                checks.finish()
+            diagnostics = _checked(eds, device, carried.checks if carried is not None else None, path, step)
             analysis.directives = directive_comments(eds, memo, text)
             if memo is not None:
                 memo.finish()
@@ -138,6 +125,36 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
     if carried is not None:
         carried.last = analysis
     return analysis
+
+
+def _checked(eds: EdsFile, device: Device, checks: CheckMemo | None, path: str | None,
+             step: Callable[[], None]) -> list[Diagnostic]:
+    """What the reader, the model and every check found (``step`` is called before each check), with
+    ``checks``, the memo of what they found in the document's earlier texts."""
+    from edsconv.checks import Context, load_checks
+
+    diagnostics = [*eds.diagnostics, *device.diagnostics]
+    if checks is not None:
+        checks.bind(path)
+        checks.start()
+    context = Context(eds, device, checks)
+    for check in load_checks():
+        step()
+        diagnostics += check.run(context)
+    if checks is not None:
+        checks.finish()
+    return diagnostics
+
+
+def _answer_early(carried: Carried, before: EdsFile | None, readable: Callable[[Analysis], object],
+                  version: int | None, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
+    """Hand ``readable`` the models and references of ``text`` made from the last analysis, when the edit
+    since (``carried.edit``, which made ``eds`` of ``before``) allows it: :func:`_answered_early`."""
+    last, edit = carried.last, carried.edit
+    if edit is not None and last is not None and last.eds is before:
+        early = _answered_early(last, edit, version, text, lines, eds)
+        if early is not None:
+            readable(early)
 
 
 def _answered_early(last: Analysis, edit: EntryReplaced | LinesMoved, version: int | None, text: str,

@@ -235,20 +235,13 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     if not (_printable(old_raw, raw_start, raw_old_end) and _printable(raw, raw_start, raw_new_end)) \
             or newline_of(raw) != eds.newline:
         return None
-    old, text = carried.text, raw
-    start, old_end, new_end = raw_start, raw_old_end, raw_new_end
-    if eds.newline != "\n":  # the reader's offsets count each CR LF as one character
-        start -= old_raw.count("\r\n", 0, raw_start)
-        typed = as_read(raw[raw_start:raw_new_end])
-        old_end, new_end = start + len(as_read(old_raw[raw_start:raw_old_end])), start + len(typed)
-        text = old[:start] + typed + old[old_end:]
-    moved = text.count("\n", start, new_end) - old.count("\n", start, old_end)
+    text, start, old_end, new_end, moved = _as_read(carried, eds.newline, raw, raw_start, raw_old_end, raw_new_end)
     at = bisect.bisect_right(carried.starts, start) - 1
     if at < 0:
         return None
     offset = carried.starts[at]
     entry, end, lead, number, position = carried.places[offset]
-    shift = len(text) - len(old)
+    shift = len(text) - len(carried.text)
     read = simple_entry_at(text, offset)
     if read is None:
         return None
@@ -266,18 +259,40 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     for comment in comments_in(text, entry_end, rest.end(), new_index):
         spliced.attach_trailing_comment(comment)
     edited = _with_entry(eds, number, position, spliced)
-    lines_moved = None
-    if moved:
-        lines_moved = LinesMoved(index.position(end)[0] + 1, moved)  # the line after the entry's last
-        _lines_moved(carried, _nodes_after(carried, eds, at + 1, end, lines_moved.first_line),
-                     lines_moved.first_line, moved)
-        edited.diagnostics = [d.moved(lines_moved.first_line, moved) for d in edited.diagnostics]
+    lines_moved = _after_entry_moved(carried, eds, edited, at, index.position(end)[0] + 1, moved) if moved else None
     carried.places = _moved(carried.places, at, (spliced, entry_end, lead, number, position), shift)
     carried.steps += 1
     carried.reused, carried.read = len(carried.places) - 1, 1
     section = edited.holders()[number].name
     carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, entry, spliced, lines_moved))
     return lines, edited
+
+
+def _after_entry_moved(carried: Carried, eds: EdsFile, edited: EdsFile, at: int, first_line: int,
+                       moved: int) -> LinesMoved:
+    """The lines of the last text from ``first_line`` on, those after its ``at``-th entry, moved ``moved``
+    lines: the nodes of ``eds`` (its syntax model) there say so, and so do the findings of ``edited``,
+    the new model."""
+    end = carried.places[carried.starts[at]][1]
+    _lines_moved(carried, _nodes_after(carried, eds, at + 1, end, first_line), first_line, moved)
+    edited.diagnostics = [d.moved(first_line, moved) for d in edited.diagnostics]
+    return LinesMoved(first_line, moved)
+
+
+def _as_read(carried: Carried, newline: str, raw: str, raw_start: int, raw_old_end: int,
+             raw_new_end: int) -> tuple[str, int, int, int, int]:
+    """``(text, start, old_end, new_end, moved)``: the reader's text of ``raw``, where the edit that made
+    ``raw[raw_start:raw_new_end]`` of the last text's ``[raw_start, raw_old_end)`` stands in it and in the
+    last reader's text, and the lines it added (removed, when negative). The reader's offsets count
+    each CR LF as one character (``newline``: the file's first line end; no CR LF across the edges)."""
+    old = carried.text
+    text, start, old_end, new_end = raw, raw_start, raw_old_end, raw_new_end
+    if newline != "\n":
+        start -= carried.raw.count("\r\n", 0, raw_start)
+        typed = as_read(raw[raw_start:raw_new_end])
+        old_end, new_end = start + len(as_read(carried.raw[raw_start:raw_old_end])), start + len(typed)
+        text = old[:start] + typed + old[old_end:]
+    return text, start, old_end, new_end, text.count("\n", start, new_end) - old.count("\n", start, old_end)
 
 
 def _printable(text: str, start: int, end: int) -> bool:
@@ -317,18 +332,11 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     if not (_blank_lines(old_raw, raw_start, raw_old_end) and _blank_lines(raw, raw_start, raw_new_end)) \
             or newline_of(raw) != eds.newline:
         return None
-    old, text = carried.text, raw
-    start, old_end, new_end = raw_start, raw_old_end, raw_new_end
-    if eds.newline != "\n":  # the reader's offsets count each CR LF as one character
-        start -= old_raw.count("\r\n", 0, raw_start)
-        typed = as_read(raw[raw_start:raw_new_end])
-        old_end, new_end = start + len(as_read(old_raw[raw_start:raw_old_end])), start + len(typed)
-        text = old[:start] + typed + old[old_end:]
+    text, start, old_end, new_end, moved = _as_read(carried, eds.newline, raw, raw_start, raw_old_end, raw_new_end)
     at = bisect.bisect_left(carried.starts, start)  # the first entry after the edit
     if at > 0 and carried.places[carried.starts[at - 1]][1] > start or not read_statement_by_statement(raw, text):
         return None  # inside an entry
     first_line, first_moved_line = index.position(start)[0], index.position(old_end)[0]
-    moved = text.count("\n", start, new_end) - old.count("\n", start, old_end)
     firsts = _nodes_after(carried, eds, at, start, first_line)
     new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
     lines = _lines_edited(carried.lines, first_line - 1, old_raw, raw, raw_start, raw_old_end)

@@ -8,11 +8,12 @@ syntax model is the last one with that entry replaced, and the lines and line in
 last ones with its lines replaced (the nodes after it moved, when lines came or went). When
 it typed or deleted whole blank lines outside every entry (Enter at the end of a line, a blank
 line deleted), nothing is read: the last syntax model is the new one, every node after the edit
-moved to its new line (:func:`respaced`). Any other edit reads the new text whole, then every entry whose lines the
-edit did not touch is replaced by the very same :class:`~edsconv.eds.syntax.Entry` object of the
-last analysis (:func:`reuse_entries`). Either way the model (:class:`~edsconv.model.memo.EntryMemo`)
-and the checks (:class:`~edsconv.checks.CheckMemo`) find the records and diagnostics they made
-from the entries they saw before.
+moved to its new line (:func:`respaced`). Any other edit reads the new text whole, then every
+entry whose lines the edit did not touch is replaced by the very same
+:class:`~edsconv.eds.syntax.Entry` object of the last analysis (:func:`reuse_entries`). Either
+way the model (:class:`~edsconv.model.memo.EntryMemo`) and the checks
+(:class:`~edsconv.checks.CheckMemo`) find the records and diagnostics they made from the entries
+they saw before.
 
 An entry is the same when the text from its first leading comment to the end of its last
 line lies wholly before or wholly after the changed lines, and the new reading found an
@@ -228,8 +229,7 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     as one character.
     """
     eds, index, old_raw = carried.eds, carried.index, carried.raw
-    if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
-            or raw == old_raw:
+    if eds is None or index is None or not _spliceable(carried, eds, raw):
         return None
     raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
     if not (_printable(old_raw, raw_start, raw_old_end) and _printable(raw, raw_start, raw_new_end)) \
@@ -266,6 +266,13 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     section = edited.holders()[number].name
     carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, entry, spliced, lines_moved))
     return lines, edited
+
+
+def _spliceable(carried: Carried, eds: EdsFile, raw: str) -> bool:
+    """Whether the last syntax model (``eds``) may be spliced into that of ``raw``: the last text was ASCII
+    (one character a byte, no byte order mark), ``raw`` differs from it, and the last full reading was
+    recent enough (:data:`FULL_READ_EVERY`)."""
+    return carried.steps < FULL_READ_EVERY and eds.encoding == "ascii" and raw != carried.raw
 
 
 def _after_entry_moved(carried: Carried, eds: EdsFile, edited: EdsFile, at: int, first_line: int,
@@ -324,8 +331,8 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     The line ends typed must be those of the file (the reader keeps its first one).
     """
     eds, index, old_raw = carried.eds, carried.index, carried.raw
-    if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
-            or raw == old_raw or any(section.unparsed for section in eds.holders()) \
+    if eds is None or index is None or not _spliceable(carried, eds, raw) \
+            or any(section.unparsed for section in eds.holders()) \
             or any(d.code in NAMING_A_LINE for d in eds.diagnostics):
         return None
     raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)

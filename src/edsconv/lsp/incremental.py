@@ -36,6 +36,7 @@ from __future__ import annotations
 import bisect
 import dataclasses
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from itertools import islice
 from typing import TYPE_CHECKING
@@ -228,14 +229,11 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     text (:func:`edsconv.eds.source.as_read`) is its last one with the same edit, each CR LF counted
     as one character.
     """
-    eds, index, old_raw = carried.eds, carried.index, carried.raw
-    if eds is None or index is None or not _spliceable(carried, eds, raw):
+    found = _edit_since(carried, raw, _printable)
+    if found is None:
         return None
-    raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
-    if not (_printable(old_raw, raw_start, raw_old_end) and _printable(raw, raw_start, raw_new_end)) \
-            or newline_of(raw) != eds.newline:
-        return None
-    text, start, old_end, new_end, moved = _as_read(carried, eds.newline, raw, raw_start, raw_old_end, raw_new_end)
+    eds, index, (raw_start, raw_old_end), (text, start, old_end, new_end, moved) = found
+    old_raw = carried.raw
     at = bisect.bisect_right(carried.starts, start) - 1
     if at < 0:
         return None
@@ -268,11 +266,23 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     return lines, edited
 
 
-def _spliceable(carried: Carried, eds: EdsFile, raw: str) -> bool:
-    """Whether the last syntax model (``eds``) may be spliced into that of ``raw``: the last text was ASCII
-    (one character a byte, no byte order mark), ``raw`` differs from it, and the last full reading was
-    recent enough (:data:`FULL_READ_EVERY`)."""
-    return carried.steps < FULL_READ_EVERY and eds.encoding == "ascii" and raw != carried.raw
+def _edit_since(carried: Carried, raw: str, allowed: Callable[[str, int, int], bool]) \
+        -> tuple[EdsFile, LineIndex, tuple[int, int], tuple[str, int, int, int, int]] | None:
+    """The last syntax model and line index, where the edit that made ``raw`` of the last text starts and
+    ends in it (:func:`changed_span`), and the edit in the reader's texts (:func:`_as_read`); None
+    unless the last model may be spliced: the last text was ASCII (one character a byte, no byte
+    order mark), the last full reading is recent enough (:data:`FULL_READ_EVERY`), ``raw`` differs,
+    the changed spans of both texts are ``allowed`` and the file's first line end stays."""
+    eds, index, old_raw = carried.eds, carried.index, carried.raw
+    if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
+            or raw == old_raw:
+        return None
+    raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
+    if not (allowed(old_raw, raw_start, raw_old_end) and allowed(raw, raw_start, raw_new_end)) \
+            or newline_of(raw) != eds.newline:
+        return None
+    return eds, index, (raw_start, raw_old_end), _as_read(carried, eds.newline, raw, raw_start, raw_old_end,
+                                                           raw_new_end)
 
 
 def _after_entry_moved(carried: Carried, eds: EdsFile, edited: EdsFile, at: int, first_line: int,
@@ -330,16 +340,13 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     and a comment keeps its owner (the statement whose last line it stands on, else the next one).
     The line ends typed must be those of the file (the reader keeps its first one).
     """
-    eds, index, old_raw = carried.eds, carried.index, carried.raw
-    if eds is None or index is None or not _spliceable(carried, eds, raw) \
-            or any(section.unparsed for section in eds.holders()) \
-            or any(d.code in NAMING_A_LINE for d in eds.diagnostics):
+    found = _edit_since(carried, raw, _blank_lines)
+    if found is None:
         return None
-    raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
-    if not (_blank_lines(old_raw, raw_start, raw_old_end) and _blank_lines(raw, raw_start, raw_new_end)) \
-            or newline_of(raw) != eds.newline:
+    eds, index, (raw_start, raw_old_end), (text, start, old_end, new_end, moved) = found
+    if any(section.unparsed for section in eds.holders()) or any(d.code in NAMING_A_LINE for d in eds.diagnostics):
         return None
-    text, start, old_end, new_end, moved = _as_read(carried, eds.newline, raw, raw_start, raw_old_end, raw_new_end)
+    old_raw = carried.raw
     at = bisect.bisect_left(carried.starts, start)  # the first entry after the edit
     if at > 0 and carried.places[carried.starts[at - 1]][1] > start or not read_statement_by_statement(raw, text):
         return None  # inside an entry

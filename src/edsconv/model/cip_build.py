@@ -287,7 +287,6 @@ class _Builder:
             self.device.icon_contents = decode_icon(text.text) if isinstance(text, String) else None
 
 
-
 #: The sections whose single entries land in :class:`Additions`.
 _ADDITION_SECTIONS = frozenset({"File", "Device", "ParamClass", "Connection Manager"})
 

@@ -224,3 +224,19 @@ async def test_an_edit_after_a_form_feed_lands_on_the_line_the_editor_means(clie
         types.VersionedTextDocumentIdentifier(2, uri), [change((94, 18), (94, 24), "Param2")]))
     repaired = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
     assert (repaired.version, list(repaired.diagnostics)) == (2, [])
+
+
+@pytest.mark.parametrize(("line", "position", "expected"), [
+    ("Name = \"caf\u00e9\";\n", (0, 99), (1, 15)),  # past the end of a line with a non-ASCII character: its end
+    ("Name = \"caf\u00e9\";", (0, 99), (1, 15)),  # the last line, without a line break: its end too
+    ("Name = 1;\r\n", (0, 99), (1, 10)),  # past the end of an ASCII line: its end, before the CR LF
+    ("\U0001f600 = 1;\n", (0, 2), (1, 2)),  # after the two UTF-16 units of the emoji: the next character
+    ("\U0001f600 = 1;\n", (0, 1), (1, 2)),  # between them: after it, as pygls counts
+    ("a\n", (5, 3), (6, 4)),  # a line past the last: as it is
+])
+def test_a_request_position_is_the_column_lsp_means_and_stays_as_the_client_sent_it(line, position, expected):
+    from edsconv.lsp.positions import Positions
+
+    sent = types.Position(*position)
+    assert Positions(PositionCodec(types.PositionEncodingKind.Utf16), [line]).from_client(sent) == expected
+    assert (sent.line, sent.character) == position

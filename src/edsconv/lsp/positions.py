@@ -8,6 +8,8 @@ from collections.abc import Sequence
 from lsprotocol import types
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition
 
+from edsconv.lsp.document import column
+
 
 class Positions:
     """Converts positions for one version of a document."""
@@ -27,8 +29,10 @@ class Positions:
         return types.Range(self.to_client(line, column), self.to_client(end_line, end_column))
 
     def from_client(self, position: types.Position) -> tuple[int, int]:
-        """An LSP position as a model position (1-based line and column)."""
-        if position.line < len(self._lines) and not self._lines[position.line].isascii():
-            server = self._codec.position_from_client_units(self._lines, position)
-            return server.line + 1, server.character + 1
-        return position.line + 1, position.character + 1
+        """An LSP position as a model position (1-based line and column): a character past the line's
+        end stands at its end, as LSP says (pygls' own conversion puts it one before the end, and
+        writes that into the client's position)."""
+        if position.line >= len(self._lines):
+            return position.line + 1, position.character + 1
+        content = self._lines[position.line].rstrip("\r\n")
+        return position.line + 1, column(content, position.character, self._codec) + 1

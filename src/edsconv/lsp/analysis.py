@@ -40,7 +40,6 @@ IDLE_COLLECTION = 1.0
 FULL_COLLECTION_EVERY = 50
 
 
-
 @dataclass(slots=True)
 class Analysis:
     version: int | None

@@ -61,17 +61,18 @@ class EntryMemo:
             self.misses += 1
             return MISSING
         self.hits += 1
-        used = self._used.get(kind)
-        if used is None:
-            used = self._used[kind] = {}
-        used[id(node)] = found
+        self._used_of(kind)[id(node)] = found
         return found[2]
 
     def put(self, kind: Kind, node: object, context: object, value: Any) -> None:
+        self._used_of(kind)[id(node)] = (node, context, value)
+
+    def _used_of(self, kind: Kind) -> dict[int, _Stored]:
+        """What this version used of ``kind``, by the node's identity."""
         used = self._used.get(kind)
         if used is None:
             used = self._used[kind] = {}
-        used[id(node)] = (node, context, value)
+        return used
 
     def lines_moved(self, first_line: int, delta: int) -> None:
         """The lines of the text from ``first_line`` on moved ``delta`` lines: every value the next version

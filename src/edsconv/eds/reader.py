@@ -149,22 +149,35 @@ def _matched_statement_end(text: str, position: int, report: Report) -> int:
 
 def _read(builder: SyntaxBuilder) -> None:
     """Simple statements here, the others by Lark, each from where the last one ended."""
+    read_on(builder, 0)
+
+
+def read_on(builder: SyntaxBuilder, position: int) -> int | None:
+    """Read the statements from ``position`` on (the text's start, or the end of a line after a statement
+    of the builder's section): to the text's end (None), or to where the builder says to stop
+    (:attr:`SyntaxBuilder.stops`), the end of the last statement read (returned); None also when a
+    statement for Lark ends past ``builder.give_up_at``."""
     text = builder.text
     tail = lexicon().tail
-    position: int | None = 0
     errors = 0
-    while position is not None:
-        position = _read_simple_statements(builder, position)
+    resumed: int | None = position
+    while resumed is not None:
+        position = _read_simple_statements(builder, resumed)
+        if builder.stopped:
+            return position
         if tail.match(text, position):
             builder.take_comments(position, len(text))
-            return
+            return None
         from edsconv.eds import lark_reader
 
         end = _statement_end(text, position)
+        if end > builder.give_up_at:
+            return None
         if lark_reader.read_region(builder, position, end):
-            position = end
+            resumed = end
         else:
-            position, errors = lark_reader.recover(builder, position, errors)
+            resumed, errors = lark_reader.recover(builder, position, errors)
+    return None
 
 
 def _read_simple_statements(builder: SyntaxBuilder, position: int) -> int:
@@ -175,11 +188,21 @@ def _read_simple_statements(builder: SyntaxBuilder, position: int) -> int:
     text, lines = builder.text, builder.lines
     lex = lexicon()
     match, find = lex.statement_start.match, text.find
+    stop_from, stops, header_stop = builder.stop_from, builder.stops, builder.header_stop
     known: set[str] = set()
-    while (head := match(text, position)) is not None:
+    while True:
+        if position >= stop_from and stops(position):
+            builder.stopped = True
+            return position
+        head = match(text, position)
+        if head is None:
+            return position
         start = head.start("entry")
         if start < 0:  # a section header
             start = head.start("section")
+            if start == header_stop:
+                builder.stopped = True
+                return position
             if find("$", position, start) != -1:
                 builder.take_comments(position, start)
             builder.add_section(head.group("section"), start, head.end())
@@ -195,7 +218,6 @@ def _read_simple_statements(builder: SyntaxBuilder, position: int) -> int:
         keyword = entry_keyword(head.group("entry"))
         builder.add_entry(Entry.unread(keyword, start, end, lines), None)
         position = end
-    return position
 
 
 #: how many field spellings :func:`_simple_entry_end` remembers as valid (a set of short strings)

@@ -164,6 +164,10 @@ class LineIndex:
         line = bisect.bisect_right(starts, offset)
         return line, offset - starts[line - 1] + 1
 
+    def offset(self, line: int, column: int) -> int:
+        """The offset of 1-based ``line`` and ``column``: :meth:`position` undone."""
+        return self._line_starts()[line - 1] + column - 1
+
     def starts_line(self, offset: int) -> bool:
         """True when only white space stands between the line start and ``offset``."""
         starts = self._line_starts()

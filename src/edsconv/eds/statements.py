@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import bisect
 import re
+import sys
+from collections.abc import Callable
 
 from edsconv.diagnostics import Diagnostic, Rule
 from edsconv.eds.reader_rules import (
@@ -51,6 +53,14 @@ class SyntaxBuilder:
         self.previous: Statement | None = None
         #: the end of the last statement
         self.last_end = 0
+        #: where the reader may stop before the text's end (:func:`edsconv.eds.reader.read_on`; a whole
+        #: read never does): at the end of a statement at or after ``stop_from`` that ``stops`` accepts,
+        #: or before the section header that starts at ``header_stop``; ``stopped`` once it has
+        self.stop_from = sys.maxsize
+        self.stops: Callable[[int], bool] = _never
+        self.header_stop = -1
+        self.stopped = False
+        self.give_up_at = sys.maxsize
 
     def report(self, rule: Rule, message: str, offset: int) -> None:
         line, column = self.lines.position(offset)
@@ -144,6 +154,10 @@ class SyntaxBuilder:
     def finish(self) -> EdsFile:
         self.attach_pending(len(self.text) + 1, None)
         return self.eds
+
+
+def _never(_: int) -> bool:
+    return False
 
 
 def _attach(statement: Statement, comment: Comment) -> None:

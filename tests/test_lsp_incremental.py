@@ -220,8 +220,9 @@ MIXED = EXAMPLE.replace("\n", "\r\n").replace("\r\n\r\n[Device]", "\r\n\n[Device
      EXAMPLE.replace("EtherNet/IP Port", "EtherNet\\q").replace("0,255,3,", "0,\n255,3,"), "reread"),
     ("a line broken inside an entry where the reader names a line", DUPLICATED,
      DUPLICATED.replace("0,255,3,", "0,\n255,3,"), ""),
+    # the comment leads the next entry now: both read again (lsp.region)
     ("a line break before a comment on a statement's line", EXAMPLE,
-     EXAMPLE.replace("ProdCode = 1001;", "ProdCode = 1001;\n"), ""),
+     EXAMPLE.replace("ProdCode = 1001;", "ProdCode = 1001;\n"), "region"),
     ("a CR LF typed into a LF file: its first line end", EXAMPLE, "\r\n" + EXAMPLE, ""),
     ("a CR typed before a LF: one line end", MIXED, MIXED.replace("\r\n\n[Device]", "\r\n\r\n[Device]"), ""),
     ("a line with text", EXAMPLE, "$\n" + EXAMPLE, ""),
@@ -235,8 +236,9 @@ def test_blank_lines_typed_or_deleted_between_statements_move_the_last_model(nam
     entries = carried.read
     assert assert_exact(text, carried, name) == (splice != "")  # hover answered at once
     assert carried.splice == splice, name
-    if splice:  # the entry the line was typed into is read again
-        assert (carried.read, carried.reused) == ((0, entries) if splice == "respaced" else (1, entries - 1))
+    if splice:  # the entries the line was typed into are read again
+        read = {"respaced": 0, "reread": 1, "region": 2}[splice]
+        assert (carried.read, carried.reused) == (read, entries - read)
     assert_exact(base, carried)  # and back again
 
 
@@ -368,10 +370,10 @@ def test_a_keystroke_in_a_dense_section_reads_only_its_entry():
             f'"P400{int(typed) - 1}"', f'"P400{typed}"')
         assert assert_exact(text, carried)  # and hover answered before the whole model was made
         assert carried.splice == "reread" and carried.read == 1
-    # an edit of a leading comment is read whole; every entry but the one it leads is the one read before
+    # an edit of a leading comment reads its entry again (lsp.region); every other one is the one read before
     text = text.replace("$ parameter 600\n", "$ parameter 600!\n")
     assert_exact(text, carried)
-    assert carried.splice == "" and carried.reused == 800
+    assert carried.splice == "region" and (carried.read, carried.reused) == (1, 800)
 
 
 def test_hover_waits_for_the_whole_model_when_a_parameter_s_data_type_changes():

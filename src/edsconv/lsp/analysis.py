@@ -17,7 +17,7 @@ from __future__ import annotations
 import asyncio
 import gc
 import traceback
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field, replace
 
@@ -26,10 +26,12 @@ from edsconv.checks import CheckMemo
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.source import as_read, split_lines
 from edsconv.eds.syntax import EdsFile, Entry
-from edsconv.lsp.incremental import Carried, EntryReplaced, LinesMoved, reread, respaced, reuse_entries
+from edsconv.lsp.incremental import Carried, Edit, EntryReplaced, LinesMoved, reread, respaced, reuse_entries
+from edsconv.lsp.region import reread_region
 from edsconv.model import Device
-from edsconv.model.build import build, with_entry_rebuilt
-from edsconv.model.references import Occurrence, definitions, occurrences, spans_moved, with_entry_spans
+from edsconv.model.build import build
+from edsconv.model.rebuild import with_entries_rebuilt, with_entry_rebuilt
+from edsconv.model.references import Occurrence, definitions, occurrences, spans_moved, spans_of, spans_replaced
 from edsconv.suppress import Directives, directive_comments
 
 #: Seconds without an analysis after which the garbage of the earlier ones is collected (see :class:`Analyses`)
@@ -89,7 +91,8 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
     step()
     before = carried.eds if carried is not None else None
     with paused_gc():  # a splice makes many objects too (respaced: the moved spans)
-        spliced = (reread(carried, text) or respaced(carried, text)) if carried is not None else None
+        spliced = (reread(carried, text) or respaced(carried, text) or reread_region(carried, text)) \
+            if carried is not None else None
     lines, eds = spliced or (tuple(split_lines(text)), edsconv.parse(text, path))
     step()
     with paused_gc():
@@ -156,22 +159,50 @@ def _answer_early(carried: Carried, before: EdsFile | None, readable: Callable[[
             readable(early)
 
 
-def _answered_early(last: Analysis, edit: EntryReplaced | LinesMoved, version: int | None, text: str,
+def _answered_early(last: Analysis, edit: Edit, version: int | None, text: str,
                     lines: tuple[str, ...], eds: EdsFile) -> Analysis | None:
     """The models and references of ``text``, whose syntax model ``eds`` is ``last``'s after ``edit``,
     made from ``last``'s: what hover, completion and navigation answer from while the whole analysis is
-    made. Where one entry was read again, when its record is all that changed
-    (:func:`edsconv.model.build.with_entry_rebuilt`), else None; where blank lines moved the nodes after
-    them, ``last``'s model and the places naming entries, on their new lines."""
+    made. Where blank lines moved the nodes after them, ``last``'s model and the places naming entries,
+    on their new lines; where entries were read again, when their records are all that changed
+    (:func:`edsconv.model.rebuild.with_entry_rebuilt`, :func:`~edsconv.model.rebuild.with_entries_rebuilt`)
+    and so are the definitions of their keywords, else None."""
     if isinstance(edit, LinesMoved):
         spans = spans_moved(last.spans, edit.first_line, edit.moved) if edit.moved else last.spans
         return Analysis(version, text, lines, eds, replace(last.device, eds=eds), [], spans, last.definitions)
-    device = with_entry_rebuilt(last.device, eds, edit.section, edit.old, edit.new)
-    if device is None or last.definitions.get(edit.new.keyword) is not edit.old:
+    old: Sequence[Entry]
+    new: Sequence[Entry]
+    if isinstance(edit, EntryReplaced):
+        device = with_entry_rebuilt(last.device, eds, edit.section, edit.old, edit.new)
+        old, new = (edit.old,), (edit.new,)
+    else:
+        old, new = edit.old, edit.new
+        device = with_entries_rebuilt(last.device, eds, edit.section, old, new, edit.first, edit.start)
+    if device is None:
+        return None
+    defined = _definitions_after(last.definitions, device, old, new)
+    if defined is None:
         return None
     moved = edit.lines.moved if edit.lines is not None else 0
-    spans = with_entry_spans(last.spans, device, edit.section, edit.old, edit.new, lines, moved)
-    return Analysis(version, text, lines, eds, device, [], spans, {**last.definitions, edit.new.keyword: edit.new})
+    spans = spans_replaced(last.spans, edit.start, edit.last_line, spans_of(device, edit.section, new, defined, lines),
+                           moved)
+    return Analysis(version, text, lines, eds, device, [], spans, defined)
+
+
+def _definitions_after(known: dict[str, Entry], device: Device, old: Sequence[Entry],
+                       new: Sequence[Entry]) -> dict[str, Entry] | None:
+    """The definitions of ``device``, made when the entries ``new`` took the place of ``old``, whose were
+    ``known``; None when the entry defining a keyword other than these changed (a numbered entry kept
+    as written elsewhere, which a record of that keyword now hides or no longer does)."""
+    if len(old) == len(new) == 1 and old[0].keyword == new[0].keyword and known.get(old[0].keyword) is old[0]:
+        return {**known, new[0].keyword: new[0]}  # what the device defines by that keyword has not changed
+    defined = definitions(device)
+    replaced = {id(entry) for entry in (*old, *new)}
+    for keyword in {entry.keyword for entry in (*old, *new)}:
+        before, after = known.get(keyword), defined.get(keyword)
+        if before is not after and any(entry is not None and id(entry) not in replaced for entry in (before, after)):
+            return None
+    return defined
 
 
 def _failed(text: str, version: int | None, path: str | None, lines: tuple[str, ...], eds: EdsFile,

@@ -47,7 +47,7 @@ from edsconv.eds.reader import read_statement_by_statement, simple_entry_at
 from edsconv.eds.reader_rules import DUPLICATE_ENTRY, ENTRY_OUTSIDE_SECTION, NAMING_A_LINE
 from edsconv.eds.runs import comments_in
 from edsconv.eds.source import LineIndex, as_read, newline_of, split_lines
-from edsconv.eds.syntax import EdsFile, Entry
+from edsconv.eds.syntax import EdsFile, Entry, Section
 from edsconv.model.memo import EntryMemo
 
 if TYPE_CHECKING:
@@ -63,7 +63,7 @@ _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 #: text is decoded
 _PRINTABLE = re.compile(r"[\x20-\x7e\t\r\n]*")
 #: The rest of an entry's last line when no other statement stands on it: blanks, perhaps a comment
-_REST_OF_LINE = re.compile(r"[ \t\f\v\x1a]*+(?:\$[^\n]*+)?(?:\n|\Z)")
+REST_OF_LINE = re.compile(r"[ \t\f\v\x1a]*+(?:\$[^\n]*+)?(?:\n|\Z)")
 #: Whole lines of blanks, as an edit between statements types or deletes them (:func:`respaced`)
 _BLANK_LINES = re.compile(r"(?:[ \t]*(?:\r\n|\r|\n))*")
 #: Diagnostics the reader gives an entry at its start whatever its fields say
@@ -82,12 +82,36 @@ class LinesMoved:
 @dataclass(frozen=True, slots=True)
 class EntryReplaced:
     """An edit inside one entry's fields (:func:`reread`): the entry of section ``section`` read again,
-    the one read in its place, and the lines after it moved when the edit typed or deleted line breaks."""
+    the one read in its place, where the old one started (line, column) and its last line, and the
+    lines after it moved when the edit typed or deleted line breaks."""
 
     section: str
     old: Entry
     new: Entry
+    start: tuple[int, int]
+    last_line: int
     lines: LinesMoved | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class EntriesReplaced:
+    """An edit that changed where statements begin or end (:func:`edsconv.lsp.region.reread_region`): the
+    entries ``old`` of section ``section`` from its ``first``-th on, read again as ``new`` (any number of
+    each, keywords and unreadable text as they came), the lines they stood on (from the start of
+    ``start``'s to the end of ``last_line``: no other statement's), and the lines after them moved
+    when the edit typed or deleted line breaks."""
+
+    section: str
+    old: tuple[Entry, ...]
+    new: tuple[Entry, ...]
+    first: int
+    start: tuple[int, int]
+    last_line: int
+    lines: LinesMoved | None = None
+
+
+#: What the last analysis changed of the syntax model before it, when it made its own of that one
+Edit = EntryReplaced | EntriesReplaced | LinesMoved
 
 
 #: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
@@ -123,7 +147,7 @@ class Carried:
     read: int = 0
     #: what the last analysis changed of the syntax model before it, when it made its own of that one
     #: (None: it read its text whole)
-    edit: EntryReplaced | LinesMoved | None = None
+    edit: Edit | None = None
     #: the last analysis that ran to its end (:func:`edsconv.lsp.analysis.analyse`)
     last: Analysis | None = None
     #: the line moves the memos have yet to follow, in order (:meth:`settle`)
@@ -139,14 +163,17 @@ class Carried:
 
     @property
     def splice(self) -> str:
-        """How the last analysis made its syntax model: "reread", "respaced", or "" (read whole)."""
-        return "reread" if isinstance(self.edit, EntryReplaced) else "respaced" if self.edit else ""
+        """How the last analysis made its syntax model: "reread", "region", "respaced", or "" (read whole)."""
+        return _SPLICES.get(type(self.edit), "")
 
     def keep(self, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile, index: LineIndex | None,
-             edit: EntryReplaced | LinesMoved | None) -> None:
+             edit: Edit | None) -> None:
         """Describe ``raw`` (read as ``text``) from now on (``places`` already does)."""
         self.raw, self.text, self.lines = raw, text, lines
         self.eds, self.index, self.starts, self.edit = eds, index, list(self.places), edit
+
+
+_SPLICES = {EntryReplaced: "reread", EntriesReplaced: "region", LinesMoved: "respaced"}
 
 
 def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...], eds: EdsFile) -> None:
@@ -155,7 +182,7 @@ def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...],
     them) wherever the edit left an entry as it was; then make ``carried`` describe ``raw``.
 
     An entry wholly before the changed lines stands at the same offset in both texts, one wholly
-    after them ``shift`` characters later, and ``moved`` lines later (:func:`_lines_moved`). This loop
+    after them ``shift`` characters later, and ``moved`` lines later (:func:`note_lines_moved`). This loop
     runs once per entry of the file: keep it lean.
     """
     start = end = shift = moved = 0
@@ -185,7 +212,7 @@ def reuse_entries(carried: Carried, raw: str, text: str, lines: tuple[str, ...],
                         _first_after(firsts, entry)
             places[offset] = (entry, entry_end, lead, number, index)
     if firsts:
-        _lines_moved(carried, firsts, carried.index.position(end - shift)[0], moved)  # type: ignore[union-attr]
+        note_lines_moved(carried, firsts, carried.index.position(end - shift)[0], moved)  # type: ignore[union-attr]
     carried.steps = carried.steps + 1 if reusing else 0
     carried.places = places
     carried.reused, carried.read = reused, len(places) - reused
@@ -202,7 +229,7 @@ def _first_after(firsts: dict[LineIndex, int], entry: Entry) -> None:
     firsts.setdefault(entry.leading_comments[0].source, lead)  # type: ignore[arg-type]
 
 
-def _lines_moved(carried: Carried, firsts: dict[LineIndex, int], first_line: int, moved: int) -> None:
+def note_lines_moved(carried: Carried, firsts: dict[LineIndex, int], first_line: int, moved: int) -> None:
     """An edit added ``moved`` lines (removed, when negative) before line ``first_line`` of the last
     text: the nodes after it, read from older texts, say their new lines, and what the memos made of
     them will (:meth:`Carried.settle`).
@@ -223,13 +250,13 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
 
     Exact because the reader, coming to that entry's start in the text it makes of ``raw``, reads it as
     it does here, and then finds the text after it as it was; its other entries keep their places, and
-    the nodes after it their lines, or move with the lines the edit typed or deleted (:func:`_lines_moved`;
+    the nodes after it their lines, or move with the lines the edit typed or deleted (:func:`note_lines_moved`;
     not where a finding's message names a line). The last text was ASCII and the edit typed nothing
     but printable ASCII and line ends of the file's kind, no CR LF across its edges, so the reader's
     text (:func:`edsconv.eds.source.as_read`) is its last one with the same edit, each CR LF counted
     as one character.
     """
-    found = _edit_since(carried, raw, _printable)
+    found = edit_since(carried, raw, printable)
     if found is None:
         return None
     eds, index, (raw_start, raw_old_end), (text, start, old_end, new_end, moved) = found
@@ -244,12 +271,12 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     if read is None:
         return None
     keyword, body, entry_end = read
-    rest = _REST_OF_LINE.match(text, entry_end)
+    rest = REST_OF_LINE.match(text, entry_end)
     if keyword != entry.keyword or start < body or new_end > entry_end or entry_end != end + shift or rest is None \
             or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(raw, text) \
             or moved and any(d.code in NAMING_A_LINE for d in eds.diagnostics):
         return None
-    lines = _lines_edited(carried.lines, index.position(start)[0] - 1, old_raw, raw, raw_start, raw_old_end)
+    lines = lines_edited(carried.lines, index.position(start)[0] - 1, old_raw, raw, raw_start, raw_old_end)
     new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
     spliced = Entry.unread(keyword, offset, entry_end, new_index)
     if entry.lead_offset != entry.offset:
@@ -257,16 +284,18 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     for comment in comments_in(text, entry_end, rest.end(), new_index):
         spliced.attach_trailing_comment(comment)
     edited = _with_entry(eds, number, position, spliced)
-    lines_moved = _after_entry_moved(carried, eds, edited, at, index.position(end)[0] + 1, moved) if moved else None
+    start_at, last_line = (entry.line, entry.column), index.position(end)[0]  # before the lines move
+    lines_moved = _after_entry_moved(carried, eds, edited, at, last_line + 1, moved) if moved else None
     carried.places = _moved(carried.places, at, (spliced, entry_end, lead, number, position), shift)
     carried.steps += 1
     carried.reused, carried.read = len(carried.places) - 1, 1
     section = edited.holders()[number].name
-    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, entry, spliced, lines_moved))
+    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, entry, spliced, start_at, last_line,
+                                                                    lines_moved))
     return lines, edited
 
 
-def _edit_since(carried: Carried, raw: str, allowed: Callable[[str, int, int], bool]) \
+def edit_since(carried: Carried, raw: str, allowed: Callable[[str, int, int], bool]) \
         -> tuple[EdsFile, LineIndex, tuple[int, int], tuple[str, int, int, int, int]] | None:
     """The last syntax model and line index, where the edit that made ``raw`` of the last text starts and
     ends in it (:func:`changed_span`), and the edit in the reader's texts (:func:`_as_read`); None
@@ -291,7 +320,7 @@ def _after_entry_moved(carried: Carried, eds: EdsFile, edited: EdsFile, at: int,
     lines: the nodes of ``eds`` (its syntax model) there say so, and so do the findings of ``edited``,
     the new model."""
     end = carried.places[carried.starts[at]][1]
-    _lines_moved(carried, _nodes_after(carried, eds, at + 1, end, first_line), first_line, moved)
+    note_lines_moved(carried, nodes_after(carried, eds, at + 1, end, first_line), first_line, moved)
     edited.diagnostics = [d.moved(first_line, moved) for d in edited.diagnostics]
     return LinesMoved(first_line, moved)
 
@@ -312,14 +341,14 @@ def _as_read(carried: Carried, newline: str, raw: str, raw_start: int, raw_old_e
     return text, start, old_end, new_end, text.count("\n", start, new_end) - old.count("\n", start, old_end)
 
 
-def _printable(text: str, start: int, end: int) -> bool:
+def printable(text: str, start: int, end: int) -> bool:
     """Whether ``text[start:end]`` is printable ASCII and line ends, no CR LF standing across its edges."""
     return _PRINTABLE.fullmatch(text, start, end) is not None \
         and not (start > 0 and text[start - 1] == "\r" and text.startswith("\n", start)) \
         and not (end > start and text[end - 1] == "\r" and text.startswith("\n", end))
 
 
-def _lines_edited(lines: tuple[str, ...], first: int, old_raw: str, raw: str, start: int,
+def lines_edited(lines: tuple[str, ...], first: int, old_raw: str, raw: str, start: int,
                   old_end: int) -> tuple[str, ...]:
     """``lines`` (of ``old_raw``) made those of ``raw``, where ``old_raw[start:old_end]`` changed and the
     rest stayed; ``first``: the 0-based line of ``start``."""
@@ -332,7 +361,7 @@ def _lines_edited(lines: tuple[str, ...], first: int, old_raw: str, raw: str, st
 def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
     """The lines and syntax model of the editor's ``raw`` text when the edit typed or deleted nothing but
     whole blank lines, outside every entry (Enter at the end of a line, a blank line deleted): the last
-    syntax model with every node after the edit on its new line (:func:`_lines_moved`); None for any
+    syntax model with every node after the edit on its new line (:func:`note_lines_moved`); None for any
     other edit, or in a file with text the reader could not parse (whose extent blank lines may change)
     or with a finding whose message names a line.
 
@@ -340,7 +369,7 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     and a comment keeps its owner (the statement whose last line it stands on, else the next one).
     The line ends typed must be those of the file (the reader keeps its first one).
     """
-    found = _edit_since(carried, raw, _blank_lines)
+    found = edit_since(carried, raw, _blank_lines)
     if found is None:
         return None
     eds, index, (raw_start, raw_old_end), (text, start, old_end, new_end, moved) = found
@@ -351,11 +380,11 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     if at > 0 and carried.places[carried.starts[at - 1]][1] > start or not read_statement_by_statement(raw, text):
         return None  # inside an entry
     first_line, first_moved_line = index.position(start)[0], index.position(old_end)[0]
-    firsts = _nodes_after(carried, eds, at, start, first_line)
+    firsts = nodes_after(carried, eds, at, start, first_line)
     new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
-    lines = _lines_edited(carried.lines, first_line - 1, old_raw, raw, raw_start, raw_old_end)
+    lines = lines_edited(carried.lines, first_line - 1, old_raw, raw, raw_start, raw_old_end)
     if moved:
-        _lines_moved(carried, firsts, first_moved_line, moved)
+        note_lines_moved(carried, firsts, first_moved_line, moved)
     moved_eds = dataclasses.replace(eds, diagnostics=[d.moved(first_moved_line, moved) for d in eds.diagnostics])
     carried.places = _shifted(carried.places, at, new_end - old_end, start)
     carried.steps += 1
@@ -370,7 +399,7 @@ def _blank_lines(text: str, start: int, end: int) -> bool:
         and _BLANK_LINES.fullmatch(text, start, end) is not None
 
 
-def _nodes_after(carried: Carried, eds: EdsFile, at: int, start: int, first_line: int) -> dict[LineIndex, int]:
+def nodes_after(carried: Carried, eds: EdsFile, at: int, start: int, first_line: int) -> dict[LineIndex, int]:
     """Where the first node at or after offset ``start`` of the last text (line ``first_line``, the
     ``at``-th entry and the entries after it, headers, comments, unreadable statements) stands in the
     text it was read from, by that text's index."""
@@ -422,17 +451,21 @@ def _shifted(places: dict[int, Place], first: int, shift: int, edit: int) -> dic
 
 
 def _with_entry(eds: EdsFile, number: int, position: int, entry: Entry) -> EdsFile:
-    """A copy of ``eds`` with ``entry`` in place of the ``position``-th entry of section ``number``;
-    ``eds`` is left as it was (an earlier analysis still answers from it)."""
+    """A copy of ``eds`` with ``entry`` in place of the ``position``-th entry of section ``number``."""
     section = eds.holders()[number]
     entries = list(section.entries)
     entries[position] = entry
-    replaced = dataclasses.replace(section, entries=entries)
-    if section is eds.preamble:
-        return dataclasses.replace(eds, preamble=replaced, diagnostics=list(eds.diagnostics))
+    return with_section(eds, number, dataclasses.replace(section, entries=entries), list(eds.diagnostics))
+
+
+def with_section(eds: EdsFile, number: int, section: Section, diagnostics: list[Diagnostic]) -> EdsFile:
+    """A copy of ``eds`` with ``section`` in place of its ``number``-th (:meth:`EdsFile.holders`) and the
+    reader's ``diagnostics``; ``eds`` is left as it was (an earlier analysis still answers from it)."""
+    if number == 0 and eds.preamble is not None:
+        return dataclasses.replace(eds, preamble=section, diagnostics=diagnostics)
     sections = list(eds.sections)
-    sections[number - (eds.preamble is not None)] = replaced
-    return dataclasses.replace(eds, sections=sections, diagnostics=list(eds.diagnostics))
+    sections[number - (eds.preamble is not None)] = section
+    return dataclasses.replace(eds, sections=sections, diagnostics=diagnostics)
 
 
 def index_of(eds: EdsFile) -> LineIndex | None:

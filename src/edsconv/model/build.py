@@ -16,7 +16,7 @@ from typing import Any
 
 from edsconv import spec_tables as tables
 from edsconv.diagnostics import Diagnostic, Severity, rule
-from edsconv.eds.syntax import EdsFile, Entry, Field, Group, Scalar, String, Value, ValueKind, plain_fields
+from edsconv.eds.syntax import EdsFile, Entry, Field, Group, Scalar, Section, String, Value, ValueKind, plain_fields
 from edsconv.limits import MAX_DIGITS, TOO_MANY_DIGITS, cut, shown
 from edsconv.model import (
     MODULE,
@@ -42,7 +42,6 @@ from edsconv.model import (
     Unreadable,
 )
 from edsconv.model.cip_build import attach
-from edsconv.model.cip_build import resolve as resolve_view
 from edsconv.model.device import PARAMETER_FIELD_ATTRIBUTES
 from edsconv.model.memo import MISSING, EntryMemo, Kind
 from edsconv.model.values import OUT_OF_RANGE, WRONG_KIND, ValueNote, ValueProblem, convert, converter_of, to_path
@@ -119,7 +118,7 @@ def _plan(type_name: str) -> _Plan:
                  None if kept else _converter(data_type))
 
 
-#: FieldSpec types whose fields are kept as written (:func:`plain`) by :meth:`_Builder.fields`
+#: FieldSpec types whose fields are kept as written (:func:`plain`) by :meth:`ModelBuilder.fields`
 _KEPT_AS_WRITTEN = frozenset({"Empty", "ParamDataType", "Integer", "PortSpecific"})
 
 
@@ -190,13 +189,13 @@ class _Made:
         return replace(self, diagnostics=[d.moved(first_line, delta) for d in self.diagnostics])
 
 
-#: The record made from an entry, and what making it reported (:meth:`_Builder.record`)
+#: The record made from an entry, and what making it reported (:meth:`ModelBuilder.record`)
 RECORD = Kind("record", _Made.moved)
-#: The notes made of an entry's comments (:meth:`_Builder.collect_comments`)
+#: The notes made of an entry's comments (:meth:`ModelBuilder.collect_comments`)
 COMMENT_NOTES = Kind("comments")
 
 
-class _Builder:
+class ModelBuilder:
     def __init__(self, eds: EdsFile, memo: EntryMemo | None = None, section_of: dict[int, str] | None = None) -> None:
         self.eds = eds
         self.device = Device(eds=eds)
@@ -311,32 +310,30 @@ class _Builder:
 
     # --- sections --------------------------------------------------------------------
     def build(self) -> Device:
-        handlers = {
-            "File": self.single_entry, "Device": self.single_entry, "Device Classification": self.classification,
-            "ParamClass": self.single_entry, "Params": self.params_entry, "Groups": self.group,
-            "Assembly": self.assembly_entry, "Connection Manager": self.connection_entry, "Port": self.port,
-            "Modular": self.modular_entry,
-        }
         for section in self.eds.sections:
-            spec = tables.SECTIONS.get(section.name)
-            if spec is None:
-                self.device.other_sections.append(GenericSection(
-                    section.name, [self.generic(e) for e in section.entries], section))
-                continue
-            handler = handlers[spec.name]
-            for entry in section.entries:
-                entry_spec = tables.entry_spec(spec.name, entry.keyword)
-                if entry_spec is None:
-                    self.device.extra_entries.setdefault(spec.name, []).append(self.generic(entry))
-                else:
-                    self.check_keyword_number(entry)
-                    handler(entry, entry_spec)
+            self.section(section)
         self.collect_comments()
         self.collect_unparsed()
         self.attach_enums_and_adders()
         attach(self.device)  # the typed view of the content beyond the 2003 text (model.cip)
-        _resolve(self.device)
+        resolve_references(self.device)
         return self.device
+
+    def section(self, section: Section) -> None:
+        """What the entries of ``section`` make: records, attributes, entries kept as written."""
+        spec = tables.SECTIONS.get(section.name)
+        if spec is None:
+            self.device.other_sections.append(GenericSection(
+                section.name, [self.generic(e) for e in section.entries], section))
+            return
+        handler = getattr(self, _HANDLERS[spec.name])
+        for entry in section.entries:
+            entry_spec = tables.entry_spec(spec.name, entry.keyword)
+            if entry_spec is None:
+                self.device.extra_entries.setdefault(spec.name, []).append(self.generic(entry))
+            else:
+                self.check_keyword_number(entry)
+                handler(entry, entry_spec)
 
     def check_keyword_number(self, entry: Entry) -> None:
         """EDS102 for the N of ``ParamN`` (and every numbered keyword) past the digits edsconv reads: no
@@ -447,7 +444,7 @@ class _Builder:
 
         A parameter an earlier build made (the memo's) keeps the ones that build gave it until they are
         set here, never None meanwhile: the language server answers from an analysis that shares it
-        while this one is made (:func:`with_entry_rebuilt`)."""
+        while this one is made (:func:`edsconv.model.rebuild.with_entry_rebuilt`)."""
         parameters = self.device.parameters
         enums: dict[int, tuple[Parameter, dict[int, str]]] = {}
         for family, entry in self.enums:
@@ -491,7 +488,7 @@ class _Builder:
 
     # --- [Assembly] ----------------------------------------------------------------------
     def assembly_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
-        if spec.keyword == "Revision":
+        if spec.keyword == ASSEMBLY_REVISION:
             self.device.assembly_revision = self.single(entry, spec)
         elif entry.keyword not in self.device.assemblies:
             self.device.assemblies[entry.keyword] = self.record(entry, lambda: self.assembly(entry, spec))
@@ -607,45 +604,22 @@ def spelling(value: Value) -> str:
     return value.raw
 
 
-def _resolve(device: Device) -> None:
+def resolve_references(device: Device) -> None:
     """Point every reference of the model at the record it names."""
     for ref in iter_references(device):
         ref.target = device.resolve(ref.keyword)
 
 
+#: The builder's method that reads the entries of each 2003 section
+_HANDLERS = {
+    "File": "single_entry", "Device": "single_entry", "Device Classification": "classification",
+    "ParamClass": "single_entry", "Params": "params_entry", "Groups": "group", "Assembly": "assembly_entry",
+    "Connection Manager": "connection_entry", "Port": "port", "Modular": "modular_entry",
+}
+#: The entry of [Assembly] that sets the class's revision rather than making a record
+ASSEMBLY_REVISION = "Revision"
 #: The sections each of whose entries (the record families) makes one record of a table of the device
-_RECORD_TABLES = {"Params": "parameters", "Assembly": "assemblies", "Connection Manager": "connections"}
-
-
-def with_entry_rebuilt(device: Device, eds: EdsFile, section: str, old: Entry, new: Entry) -> Device | None:
-    """The model of ``eds``, which ``device``'s syntax model became when ``new`` took the place of
-    ``old`` (an entry of ``section`` with the same keyword), where the record ``old`` made is all that
-    can change: ``device`` with that record made again from ``new`` and every reference (of the
-    typed view of the newer content too, which other entries make) resolved again; a parameter keeps
-    the enum and size adder that other entries gave it when its data type, which types them, stays.
-    None otherwise (an entry that makes no record of its own, or not the one in the table, a
-    parameter whose data type changed).
-
-    What the language server answers hover and completion from while the whole model is made again
-    (:mod:`edsconv.lsp.analysis`): its findings (diagnostics, unreadable and erroneous values, comment
-    notes) are still ``device``'s, and what reads them waits for the whole build.
-    """
-    table_name, spec = _RECORD_TABLES.get(section), tables.entry_spec(section, new.keyword)
-    table = getattr(device, table_name) if table_name is not None else {}
-    known = table.get(new.keyword)
-    if spec is None or known is None or known.entry is not old:
-        return None
-    builder = _Builder(eds, section_of={id(new): section})
-    make = {"Params": builder.parameter, "Assembly": builder.assembly, "Connection Manager": builder.connection}
-    record = make[section](new, spec)
-    if isinstance(record, Parameter):
-        if record.data_type != known.data_type:
-            return None
-        record.enum, record.size_adder = known.enum, known.size_adder
-    rebuilt = replace(device, eds=eds, **{table_name: {**table, new.keyword: record}})  # type: ignore[arg-type]
-    _resolve(rebuilt)
-    resolve_view(rebuilt)  # the typed view is made of other entries: only its references may name the record
-    return rebuilt
+RECORD_TABLES = {"Params": "parameters", "Assembly": "assemblies", "Connection Manager": "connections"}
 
 
 def build(eds: EdsFile, memo: EntryMemo | None = None) -> Device:
@@ -656,4 +630,4 @@ def build(eds: EdsFile, memo: EntryMemo | None = None) -> Device:
     only: what other entries decide (a parameter's enum and size adder, the targets of
     references) is set anew.
     """
-    return _Builder(eds, memo).build()
+    return ModelBuilder(eds, memo).build()

@@ -111,18 +111,28 @@ def occurrences(eds: EdsFile, device: Device, lines: Sequence[str], memo: EntryM
     return found
 
 
-def with_entry_spans(spans: list[Occurrence], device: Device, section: str, old: Entry, new: Entry,
-                     lines: Sequence[str], moved: int = 0) -> list[Occurrence]:
-    """``spans`` (of the model before ``new`` took the place of ``old``, from its first line on) with
-    those of ``old`` replaced by those of ``new``, a record's entry in ``device``
-    (:func:`edsconv.model.build.with_entry_rebuilt`), and those after it ``moved`` lines later: what
-    :func:`occurrences` finds in the new model. The spans are in text order: those of ``old`` follow
-    any of another entry on its first line."""
-    start = bisect.bisect_left(spans, (old.line, old.column), key=_position)
-    last = bisect.bisect_right(spans, old.end_line, key=_line_of)
-    written = [reference for reference in iter_references(device) if reference.entry is new]
-    after = spans_moved(spans[last:], old.end_line + 1, moved) if moved else spans[last:]
-    return [*spans[:start], *_entry_spans(section, new, new.keyword, written, lines), *after]
+def spans_replaced(spans: list[Occurrence], start: tuple[int, int], last_line: int, replacing: list[Occurrence],
+                   moved: int = 0) -> list[Occurrence]:
+    """``spans`` (in text order) with those from ``start`` (line, column) to the end of line ``last_line``
+    replaced by ``replacing``, and those after them ``moved`` lines later."""
+    first = bisect.bisect_left(spans, start, key=_position)
+    last = bisect.bisect_right(spans, last_line, key=_line_of)
+    after = spans_moved(spans[last:], last_line + 1, moved) if moved else spans[last:]
+    return [*spans[:first], *replacing, *after]
+
+
+def spans_of(device: Device, section: str, entries: Sequence[Entry], defined: dict[str, Entry],
+             lines: Sequence[str]) -> list[Occurrence]:
+    """The spans of ``entries``, which stand in this order in ``section``, in ``device`` (whose definitions
+    are ``defined``): what :func:`occurrences` finds of them."""
+    ids = {id(entry) for entry in entries}
+    written: dict[int, list[Reference]] = {}
+    for reference in iter_references(device):
+        if id(reference.entry) in ids:
+            written.setdefault(id(reference.entry), []).append(reference)
+    return [span for entry in entries
+            for span in _entry_spans(section, entry, entry.keyword if defined.get(entry.keyword) is entry else None,
+                                     written.get(id(entry), ()), lines)]
 
 
 def _line_of(span: Occurrence) -> int:

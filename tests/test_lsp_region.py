@@ -1,0 +1,135 @@
+"""An edit that changes where statements begin or end is read again from the statement before it until
+the reading meets the last one (edsconv.lsp.region): what the analysis answers is what a fresh one
+answers, and hover and completion answer from the last model when the records are all that changed
+(edsconv.model.rebuild.with_entries_rebuilt)."""
+
+from __future__ import annotations
+
+import pytest
+
+from edsconv.eds.lark_reader import MAX_SYNTAX_ERRORS
+from edsconv.lsp.analysis import analyse
+from edsconv.lsp.incremental import Carried
+from test_lsp_incremental import EXAMPLE, assert_exact
+
+PARAM2 = "        Param2 =\n                0,\n                6,"
+NEW_PARAM = 'Param9 = 0,,,0x0000,0xC7,2,"Speed","rpm","",0,100,0;'
+
+
+def edited(old: str, new: str, text: str = EXAMPLE) -> str:
+    assert text.count(old) == 1, old
+    return text.replace(old, new)
+
+
+@pytest.mark.parametrize(("name", "text", "read", "early"), [
+    # a section whose entries make no records: its part of the model is made again whole
+    ("a character before a keyword of [File]", edited("        DescText", "        XDescText"), 1, True),
+    ("a keyword of [Device] renamed to a known one", edited("ProdName =", "ProdNam ="), 1, True),
+    ("two entries joined by a deleted ';'", edited("ProdCode = 1001;", "ProdCode = 1001"), 2, True),
+    ("a ';' typed inside a value: the rest is text the reader cannot read",
+     edited('Catalog = "EX-8DIO";', "Catalog = EX;-8DIO;"), 1, True),
+    ("a '$' that makes the rest of an entry a comment",
+     edited('ProdName = "Example IO Adapter 8DI/8DO";', 'ProdName = "Example IO Adapter 8DI/8DO" $;'), 2, True),
+    ("an entry deleted with its line", edited("        MajRev = 1;\n", ""), 1, True),
+    ("an entry typed on a new line", edited("        MajRev = 1;\n", "        MajRev = 1;\nFoo = 2;\n"), 2, True),
+    ("the first characters of an entry typed on a new line",
+     edited("        MajRev = 1;\n", "        MajRev = 1;\nFo\n"), 1, True),
+    ("an entry with braces typed", edited("        MajRev = 1;\n", "        MajRev = 1;\nFoo = {1,{2}};\n"), 2, True),
+    ("an unterminated string", edited('Icon = "io_adapter.ico";', 'Icon = "io_adapter.ico;'), 0, True),
+    # a section of records: the records replaced and made
+    ("a parameter renamed", edited("        Param1 =", "        XParam1 ="), 1, True),
+    ("a parameter the assemblies and a group name renamed", edited("        Param2 =", "        XParam2 ="), 1, True),
+    # the reading stops before the next section's header
+    ("a parameter typed after the last one", edited("                1;\n\n[Groups]",
+                                                    f"                1;\n{NEW_PARAM}\n\n[Groups]"), 1, True),
+    ("an assembly renamed: the connections naming it no longer resolve",
+     edited("        Assem150 =", "        Assem15 ="), 1, True),
+    ("two parameters read as one", edited(f";                       $ decimal places\n{PARAM2}",
+                                          f"                        $ decimal places\n{PARAM2}"), 0, True),
+    ("a parameter with an enum renamed: its EnumN pairs with nothing", edited("        Param3 =", "        Param33 ="),
+     1, True),
+])
+def test_an_edit_of_where_statements_end_reads_only_the_statements_it_touched(name, text, read, early):
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    before = carried.read
+    assert assert_exact(text, carried, name) == early, name
+    assert carried.splice == "region", name
+    assert carried.read == read and carried.reused == before - sum(1 for _ in carried.edit.old), name
+    assert_exact(EXAMPLE, carried, name)  # and back again
+
+
+def test_hover_waits_for_the_whole_model_when_a_new_parameter_has_an_enum():
+    # Enum3 gives Param3 its enum: a parameter typed with that number needs it, which the whole build finds
+    base = edited("        Param3 =", "        XParam3 =")
+    carried = Carried()
+    analyse(base, carried=carried)
+    assert not assert_exact(EXAMPLE, carried)
+    assert carried.splice == "region"
+
+
+def test_hover_waits_for_the_whole_model_when_an_enum_is_replaced():
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    assert not assert_exact(edited("        Enum3 =", "        XEnum3 ="), carried)
+    assert carried.splice == "region"
+
+
+def test_an_entry_typed_character_by_character_answers_as_a_fresh_analysis_at_every_step():
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    splices = set()
+    for typed in range(1, len(NEW_PARAM) + 1):
+        assert_exact(edited("\n[Groups]", f"{NEW_PARAM[:typed]}\n\n[Groups]"), carried, NEW_PARAM[:typed])
+        splices.add(carried.splice)
+    assert "region" in splices
+
+
+@pytest.mark.parametrize(("name", "text"), [
+    ("a section header typed", edited("        MajRev = 1;\n", "        MajRev = 1;\n[Other]\n")),
+    ("a keyword another entry of the section has", edited("ProdName =", "MajRev =")),
+    ("an entry renamed to what a duplicate was", edited("MinRev = 2;", "MinRev = 2;\nMajRev = 3;")),
+    ("the section header's line", edited("[Device]\n", "[Device] X = 1;\n")),
+    ("the text before the first section", "$ x\n" + EXAMPLE.replace("[File]", "X = 1;\n[File]", 1)),
+    ("the last entry's ';' deleted at the end of the file", EXAMPLE.rstrip()[:-1]),
+])
+def test_an_edit_the_region_cannot_take_is_read_whole(name, text):
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    assert_exact(text, carried, name)
+    assert carried.splice == "", name
+
+
+def test_a_file_near_the_reader_s_limit_of_syntax_errors_is_read_whole():
+    # the reader stops reading after MAX_SYNTAX_ERRORS; a region read counts from nothing
+    missing = "".join(f"Group{number} = 1\n" for number in range(3, MAX_SYNTAX_ERRORS + 2))  # no ';': an error each
+    broken = EXAMPLE.replace("[Groups]", "[Groups]\n" + missing)
+    assert sum(d.code == "EDS002" for d in analyse(broken).diagnostics) == MAX_SYNTAX_ERRORS - 1
+    carried = Carried()
+    analyse(broken, carried=carried)
+    assert_exact(broken.replace("        Param1 =", "        XParam1 ="), carried)
+    assert carried.splice == ""
+    few = EXAMPLE.replace("[Groups]", "[Groups]\n?\n")
+    analyse(few, carried=carried)
+    assert_exact(few.replace("        Param1 =", "        XParam1 ="), carried)
+    assert carried.splice == "region"
+
+
+def test_lines_typed_in_a_region_move_the_nodes_after_it():
+    carried = Carried()
+    analyse(EXAMPLE, carried=carried)
+    text = edited("        Param1 =", "        Param1 =\n\n")
+    assert_exact(text.replace("        Param1 =", "        XParam1 ="), carried)
+    assert carried.splice == "region" and carried.edit.lines is not None and carried.edit.lines.moved == 2
+
+
+def test_a_brace_left_open_makes_the_region_give_up_and_the_text_read_whole():
+    # the '{' makes the reader look for the '}' to the end of the file: past 64 KB it gives up
+    line = 'Param{0} = 0,,,0x0000,0xC7,2,"P{0}","","",0,100,{0};\n'
+    text = '[File]\nDescText = "x";\n[Params]\n' + "".join(line.format(n) for n in range(1, 3001))
+    carried = Carried()
+    analyse(text, carried=carried)
+    assert_exact(text.replace("Param10 = 0,", "Param10 = {0,"), carried)
+    assert carried.splice == ""
+    assert_exact(text.replace("Param10 = 0,", "Param10 = 0 ,"), carried)  # and a region again after it
+    assert carried.splice == "region"

@@ -127,3 +127,16 @@ def test_formatting_refuses_a_file_with_syntax_errors():
     assert actions.formatting_edits(broken) == actions.range_formatting_edits(broken, 1, 200) == []
     assert "1 syntax error(s)" in (actions.format_refusal(broken) or "")
     assert actions.format_refusal(analyse(EXAMPLE)) is None and actions.formatting_edits(analyse(EXAMPLE))
+
+
+def test_definitions_are_the_entries_of_the_records_and_skip_records_made_without_one():
+    from edsconv.model import Device, Parameter
+    from edsconv.model.references import definitions
+
+    eds = edsconv.parse((REPO / "corpus" / "examples" / "io_adapter.eds").read_bytes())
+    device = edsconv.build(eds)
+    defined = definitions(device)
+    assert list(defined)[:4] == ["Param1", "Param2", "Param3", "Param4"]
+    assert defined["Assem100"] is eds.section("Assembly").entry("Assem100")
+    made = Device(parameters={**device.parameters, "Param9": Parameter("Param9", "Param", 9)})  # as from XML
+    assert "Param9" not in definitions(made) and definitions(made)["Param2"] is defined["Param2"]

@@ -133,3 +133,13 @@ def test_a_brace_left_open_makes_the_region_give_up_and_the_text_read_whole():
     assert carried.splice == ""
     assert_exact(text.replace("Param10 = 0,", "Param10 = 0 ,"), carried)  # and a region again after it
     assert carried.splice == "region"
+
+
+def test_a_blank_line_deleted_in_a_file_with_unreadable_text_is_read_again_on_the_right_lines():
+    # blank lines typed inside unreadable text change it, so respaced() refuses such a file: the region
+    # takes the blank line deleted, and the editor's lines are cut where the last text's lines were
+    base = ";\n" + EXAMPLE
+    carried = Carried()
+    analyse(base, carried=carried)
+    assert_exact(base.replace("1;\n\n[Groups]", "1;\n[Groups]"), carried)
+    assert carried.splice == "region" and carried.edit.lines.moved == -1

@@ -98,7 +98,9 @@ def reread_region(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile]
             or len(eds.diagnostics) + len(read.eds.diagnostics) + 1 >= MAX_SYNTAX_ERRORS:
         return None
     entries = read.current_section.entries
-    start_at = (index.position(resume.at)[0] + 1, 1)  # before the lines move
+    # from here to the moves, positions are the last text's: the moves renumber the lines of its index
+    start_at = (index.position(resume.at)[0] + 1, 1)
+    lines = lines_edited(carried.lines, index.position(start)[0] - 1, carried.raw, raw, raw_start, raw_old_end)
     diagnostics = _diagnostics_spliced(eds.diagnostics, index.position(resume.at), index.position(extent.end),
                                        read.eds.diagnostics, extent.first_line, moved)
     replaced = _section_spliced(section, resume, extent, read.current_section, index)
@@ -106,14 +108,14 @@ def reread_region(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile]
         note_lines_moved(carried, nodes_after(carried, eds, extent.last + 1, extent.end, extent.first_line),
                          extent.first_line, moved)
     edited = with_section(eds, resume.number, replaced, diagnostics)
-    lines = lines_edited(carried.lines, index.position(start)[0] - 1, carried.raw, raw, raw_start, raw_old_end)
-    carried.places = _places_spliced(carried.places, bisect.bisect_right(carried.starts, resume.at), extent.last + 1,
-                                     entries, resume, shift, len(entries) - (extent.after - resume.first))
+    places, first = carried.places, bisect.bisect_right(carried.starts, resume.at)
     carried.steps += 1
-    carried.reused, carried.read = len(carried.places) - len(entries), len(entries)
+    carried.reused, carried.read = len(places) - (extent.after - resume.first), len(entries)
     carried.keep(raw, text, lines, edited, new_index, EntriesReplaced(
         section.name, tuple(section.entries[resume.first:extent.after]), tuple(entries), resume.first, start_at,
-        extent.first_line - 1, LinesMoved(extent.first_line, moved) if moved else None))
+        extent.first_line - 1, LinesMoved(extent.first_line, moved) if moved else None),
+        lambda: _places_spliced(places, first, extent.last + 1, entries, resume, shift,
+                                len(entries) - (extent.after - resume.first)))
     return lines, edited
 
 

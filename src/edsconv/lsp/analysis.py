@@ -180,13 +180,10 @@ def _answered_early(last: Analysis, edit: Edit, version: int | None, text: str,
         before, first_line, moved = last.spans, edit.first_line, edit.moved
         return Analysis(version, text, lines, eds, replace(last.device, eds=eds), [],
                         lambda: spans_moved(before, first_line, moved) if moved else before, last.definitions)
-    old: Sequence[Entry]
-    new: Sequence[Entry]
-    if isinstance(edit, EntryReplaced):
-        device = with_entry_rebuilt(last.device, eds, edit.section, edit.old, edit.new)
-        old, new = (edit.old,), (edit.new,)
-    else:
-        old, new = edit.old, edit.new
+    old, new = edit.old, edit.new
+    device = with_entry_rebuilt(last.device, eds, edit.section, old[0], new[0]) \
+        if isinstance(edit, EntryReplaced) else None  # a parameter keeps its enum: no EnumN is read
+    if device is None:
         device = with_entries_rebuilt(last.device, eds, edit.section, old, new, edit.first, edit.start)
     if device is None:
         return None

@@ -80,26 +80,12 @@ class LinesMoved:
 
 
 @dataclass(frozen=True, slots=True)
-class EntryReplaced:
-    """An edit inside one entry's fields (:func:`reread`): the entry of section ``section`` read again,
-    the one read in its place, where the old one started (line, column) and its last line, and the
-    lines after it moved when the edit typed or deleted line breaks."""
-
-    section: str
-    old: Entry
-    new: Entry
-    start: tuple[int, int]
-    last_line: int
-    lines: LinesMoved | None = None
-
-
-@dataclass(frozen=True, slots=True)
 class EntriesReplaced:
     """An edit that changed where statements begin or end (:func:`edsconv.lsp.region.reread_region`): the
     entries ``old`` of section ``section`` from its ``first``-th on, read again as ``new`` (any number of
-    each, keywords and unreadable text as they came), the lines they stood on (from the start of
-    ``start``'s to the end of ``last_line``: no other statement's), and the lines after them moved
-    when the edit typed or deleted line breaks."""
+    each, keywords and unreadable text as they came), the lines they stood on (from ``start``, a line and
+    column, to the end of ``last_line``: no other statement's), and the lines after them moved when the
+    edit typed or deleted line breaks."""
 
     section: str
     old: tuple[Entry, ...]
@@ -110,8 +96,13 @@ class EntriesReplaced:
     lines: LinesMoved | None = None
 
 
+@dataclass(frozen=True, slots=True)
+class EntryReplaced(EntriesReplaced):
+    """An edit inside one entry's fields (:func:`reread`): that entry read again, as one of the same keyword."""
+
+
 #: What the last analysis changed of the syntax model before it, when it made its own of that one
-Edit = EntryReplaced | EntriesReplaced | LinesMoved
+Edit = EntriesReplaced | LinesMoved
 
 
 #: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
@@ -299,8 +290,8 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     carried.steps += 1
     carried.reused, carried.read = len(places) - 1, 1
     section = edited.holders()[number].name
-    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, entry, spliced, start_at, last_line,
-                                                                    lines_moved),
+    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, (entry,), (spliced,), position, start_at,
+                                                                    last_line, lines_moved),
                  lambda: _moved(places, at, (spliced, entry_end, lead, number, position), shift))
     return lines, edited
 

@@ -394,12 +394,19 @@ class ModelBuilder:
 
     # --- [Params] ----------------------------------------------------------------------
     def params_entry(self, entry: Entry, spec: tables.EntrySpec) -> None:
+        if not self.paired_entry(entry, spec) and entry.keyword not in self.device.parameters:
+            self.device.parameters[entry.keyword] = self.record(entry, lambda: self.parameter(entry, spec))
+
+    def paired_entry(self, entry: Entry, spec: tables.EntrySpec) -> bool:
+        """Keep an entry paired with a parameter by number (EnumN, ProxyParamSizeAdderN) for
+        :meth:`attach_enums_and_adders`; False for any other entry."""
         if spec.keyword in tables.ENUM_FAMILIES.values():
             self.enums.append((spec.pairs_with or "", entry))
         elif spec.keyword == "ProxyParamSizeAdder":
             self.size_adders.append(entry)
-        elif entry.keyword not in self.device.parameters:
-            self.device.parameters[entry.keyword] = self.record(entry, lambda: self.parameter(entry, spec))
+        else:
+            return False
+        return True
 
     def parameter(self, entry: Entry, spec: tables.EntrySpec) -> Parameter:
         proxy = spec.keyword == "ProxyParam"

@@ -9,8 +9,8 @@ before: what reads them waits for the whole build.
 from __future__ import annotations
 
 import bisect
-from collections.abc import Iterable, Sequence
-from dataclasses import replace
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
 from itertools import islice
 from typing import Any
 
@@ -29,9 +29,8 @@ _SECTION_ATTRIBUTES = {
 #: The most entries a section other than one of records may have for :func:`with_entries_rebuilt` to make
 #: its part of the model again whole (a hundredth of a second at most)
 _REBUILT_AT_MOST = 500
-#: The entries paired with a parameter of each family by number: its EnumN and ProxyParamSizeAdderN (Table C.13)
-_PAIRED = {family: tuple(spec.keyword for spec in tables.PARAMS_ENTRIES if spec.pairs_with == family)
-           for family in ("Param", "ProxyParam", "ProxiedParam")}
+#: The families of the entries paired with a parameter by number (EnumN, ProxyParamSizeAdderN: Table C.13)
+_PAIRED_PREFIXES = tuple(spec.keyword for spec in tables.PARAMS_ENTRIES if spec.pairs_with is not None)
 
 
 def with_entry_rebuilt(device: Device, eds: EdsFile, section: str, old: Entry, new: Entry) -> Device | None:
@@ -39,9 +38,9 @@ def with_entry_rebuilt(device: Device, eds: EdsFile, section: str, old: Entry, n
     ``old`` (an entry of ``section`` with the same keyword), where the record ``old`` made is all that
     can change: ``device`` with that record made again from ``new`` and every reference (of the
     typed view of the newer content too, which other entries make) resolved again; a parameter keeps
-    the enum and size adder that other entries gave it when its data type, which types them, stays.
-    None otherwise (an entry that makes no record of its own, or not the one in the table, a
-    parameter whose data type changed).
+    the enum and size adder that other entries gave it when its data type, which types them, stays,
+    and is given them anew otherwise. None for an entry that makes no record of its own, or not the
+    one in the table.
 
     What the language server answers hover and completion from while the whole model is made again
     (:mod:`edsconv.lsp.analysis`): its findings (diagnostics, unreadable and erroneous values, comment
@@ -53,11 +52,13 @@ def with_entry_rebuilt(device: Device, eds: EdsFile, section: str, old: Entry, n
     if spec is None or known is None or known.entry is not old:
         return None
     record = _made(eds, section, [(new, spec)])[new.keyword]
+    table = {**table, new.keyword: record}
     if isinstance(record, Parameter):
-        if record.data_type != known.data_type:
-            return None
-        record.enum, record.size_adder = known.enum, known.size_adder
-    rebuilt = replace(device, eds=eds, **{table_name: {**table, new.keyword: record}})  # type: ignore[arg-type]
+        if record.data_type == known.data_type:
+            record.enum, record.size_adder = known.enum, known.size_adder
+        else:
+            table = _paired_anew(eds, _entries_of(eds, section), table, {new.keyword})
+    rebuilt = replace(device, eds=eds, **{table_name: table})  # type: ignore[arg-type]
     resolve_references(rebuilt)
     resolve_view(rebuilt)  # the typed view is made of other entries: only its references may name the record
     return rebuilt
@@ -71,10 +72,12 @@ def with_entries_rebuilt(device: Device, eds: EdsFile, section: str, old: Sequen
 
     In a section of records ([Params], [Assembly], [Connection Manager]): ``device`` with the records
     ``old`` made taken out of the section's table and those of ``new`` made and put in their place,
-    the same for the entries kept as written, and every reference resolved again. Where each entry
-    of ``old`` and ``new`` makes a record of its table or is kept as written and read by nothing else
-    (no newer table defines it); None otherwise, or when a record of ``new`` has a keyword already in
-    the table, or a parameter of ``new`` is paired with an entry (EnumN, ProxyParamSizeAdderN).
+    the same for the entries kept as written, the parameters paired with the EnumN and
+    ProxyParamSizeAdderN among them, and those made, given their enums and size adders anew, and every
+    reference resolved again. Where each entry of ``old`` and ``new`` makes a record of its table, is
+    paired with a parameter or is kept as written and read by nothing else (no newer table defines it);
+    None otherwise ([Assembly]'s Revision), or when a record of ``new`` has a keyword already in the
+    table.
 
     In another section of no more than :data:`_REBUILT_AT_MOST` entries: the section's part of the
     model made again whole, and the typed view of the newer content with it.
@@ -95,15 +98,18 @@ def _with_records_rebuilt(device: Device, eds: EdsFile, holder: Section, old: Se
     removed, added = _parts(section, old), _parts(section, new)
     if removed is None or added is None:
         return None
-    gone = {entry.keyword for entry, _ in removed[0]}
-    if any(getattr(table.get(entry.keyword), "entry", None) is not entry for entry, _ in removed[0]) \
-            or any(entry.keyword in table and entry.keyword not in gone for entry, _ in added[0]):
+    gone = {entry.keyword for entry, _ in removed.records}
+    if any(getattr(table.get(entry.keyword), "entry", None) is not entry for entry, _ in removed.records) \
+            or any(entry.keyword in table and entry.keyword not in gone for entry, _ in added.records):
         return None
-    made = _made(eds, section, added[0])
-    if section == "Params" and _paired(holder.entries, made.values()):
-        return None
-    rebuilt = replace(device, eds=eds, **{table_name: _table_spliced(table, gone, made, holder.entries, first)},  # type: ignore[arg-type]
-                      extra_entries=_written_spliced(device, eds, section, removed[1], added[1], start))
+    made = _made(eds, section, added.records)
+    table = _table_spliced(table, gone, made, holder.entries, first)
+    paired = removed.paired | added.paired | {keyword for keyword, made_record in made.items()
+                                              if isinstance(made_record, Parameter)}
+    if paired:
+        table = _paired_anew(eds, holder.entries, table, paired)
+    rebuilt = replace(device, eds=eds, **{table_name: table},  # type: ignore[arg-type]
+                      extra_entries=_written_spliced(device, eds, section, removed.written, added.written, start))
     resolve_references(rebuilt)
     resolve_view(rebuilt)
     return rebuilt
@@ -143,30 +149,58 @@ def _with_section_rebuilt(device: Device, eds: EdsFile, holder: Section) -> Devi
     return rebuilt
 
 
-def _parts(section: str, entries: Sequence[Entry]) \
-        -> tuple[list[tuple[Entry, tables.EntrySpec]], list[Entry]] | None:
-    """``entries`` of a section of records: those that make a record (with their specs), and those kept as
-    written that no newer table defines; None when one is neither (EnumN, ProxyParamSizeAdderN,
-    Revision) or read by the typed view."""
-    records, written = [], []
+@dataclass(frozen=True, slots=True)
+class _Parts:
+    """Entries of a section of records: those that make a record (with their specs), those kept as written,
+    and the keywords of the parameters the others are paired with (EnumN, ProxyParamSizeAdderN)."""
+
+    records: list[tuple[Entry, tables.EntrySpec]]
+    written: list[Entry]
+    paired: set[str]
+
+
+def _parts(section: str, entries: Sequence[Entry]) -> _Parts | None:
+    """``entries`` of a section of records in their parts; None when one is the typed view's (a newer
+    table defines it) or [Assembly]'s Revision."""
+    parts = _Parts([], [], set())
     extension = section_table(section, extension=True)
     for entry in entries:
         spec = tables.entry_spec(section, entry.keyword)
         if spec is None:
             if extension is not None and tables.find_entry(extension.entries, entry.keyword) is not None:
                 return None
-            written.append(entry)
-        elif spec.pairs_with is None and spec.keyword != ASSEMBLY_REVISION:
-            records.append((entry, spec))
+            parts.written.append(entry)
+        elif spec.pairs_with is not None:
+            parts.paired.add(f"{spec.pairs_with}{tables.instance_number(entry.keyword)}")
+        elif spec.keyword != ASSEMBLY_REVISION:
+            parts.records.append((entry, spec))
         else:
             return None
-    return records, written
+    return parts
 
 
-def _paired(entries: list[Entry], parameters: Iterable[Parameter]) -> bool:
-    """Whether an entry of ``entries`` is paired with one of ``parameters`` (its EnumN, ProxyParamSizeAdderN)."""
-    pairs = {f"{family}{parameter.number}" for parameter in parameters for family in _PAIRED[parameter.family]}
-    return bool(pairs) and any(entry.keyword in pairs for entry in entries)
+def _entries_of(eds: EdsFile, section: str) -> list[Entry]:
+    """The entries of every section named ``section``, in file order."""
+    return [entry for holder in eds.sections if holder.name == section for entry in holder.entries]
+
+
+def _paired_anew(eds: EdsFile, entries: list[Entry], table: dict[str, Any], keywords: set[str]) -> dict[str, Any]:
+    """``table`` (the parameters, of ``entries``) with those of ``keywords`` it holds copied with the enum
+    and size adder that the entries paired with them give, as a build gives them
+    (:meth:`ModelBuilder.attach_enums_and_adders`): the records of the model before keep theirs."""
+    copies = {keyword: replace(table[keyword], enum=None, size_adder=None) for keyword in keywords if keyword in table}
+    if not copies:
+        return table
+    builder = ModelBuilder(eds, section_of={})
+    builder.device.parameters = copies
+    for entry in entries:
+        if entry.keyword.startswith(_PAIRED_PREFIXES):
+            spec = tables.entry_spec("Params", entry.keyword)
+            if spec is not None and f"{spec.pairs_with}{tables.instance_number(entry.keyword)}" in copies:
+                builder.section_of[id(entry)] = "Params"
+                builder.paired_entry(entry, spec)
+    builder.attach_enums_and_adders()
+    return {**table, **copies}
 
 
 def _table_spliced(table: dict[str, Any], gone: set[str], made: dict[str, Any], entries: list[Entry],

@@ -14,7 +14,10 @@ diagnostics after a blank line is typed at the top, and "(completion)" the
 completion right after it is deleted again: edits that move every line, every
 position the last analysis holds (edsconv.lsp.incremental.respaced). "keyword":
 the same for a character typed before the first entry's keyword and deleted
-again, edits that make the server read the whole text again (the worst case).
+again, and "entry" for a new entry and its line break typed before the first
+entry and deleted again: edits that change where statements begin and end, which
+the server reads again from the entry before them until its reading meets the
+last one (edsconv.lsp.region).
 Beside them, the time of one full re-check of the file in this process
 (``analyse``, warm, without what an earlier analysis left), which is what the
 server did per change before. Hover and definition: on every real
@@ -161,6 +164,8 @@ async def change_latency(client: Client, path: Path, repeat: int) -> dict:
     first = 2 + 3 * repeat
     line_break = await there_and_back(client, uri, position, first, repeat, types.Position(0, 0), "\n")
     keyword = await there_and_back(client, uri, position, first + 2 * repeat, repeat, first_keyword(text), "X")
+    entry = await there_and_back(client, uri, position, first + 4 * repeat, repeat, first_keyword(text),
+                                 "Typed = 1;\n")
     client.text_document_did_close(types.DidCloseTextDocumentParams(document))
     full, _ = best_of(repeat, analyse, text)
     return {"file": path.name, "bytes": path.stat().st_size, "open_to_diagnostics_s": opened,
@@ -168,7 +173,8 @@ async def change_latency(client: Client, path: Path, repeat: int) -> dict:
             "hover_after_change_s": statistics.median(hovers),
             "completion_after_change_s": statistics.median(completions),
             "line_break_to_diagnostics_s": line_break[0], "completion_after_line_break_s": line_break[1],
-            "keyword_to_diagnostics_s": keyword[0], "completion_after_keyword_s": keyword[1], "full_recheck_s": full}
+            "keyword_to_diagnostics_s": keyword[0], "completion_after_keyword_s": keyword[1],
+            "entry_to_diagnostics_s": entry[0], "completion_after_entry_s": entry[1], "full_recheck_s": full}
 
 
 async def request_latency(client: Client, files: list[Path], repeat: int) -> dict:
@@ -223,14 +229,16 @@ def main() -> None:
     print(f"after a one-character change (median of {arguments.repeat}; the {CHANGE_DELAY * 1000:.0f} ms pause "
           "included), beside one full re-check")
     print(f"  {'file':<34} {'bytes':>10} {'diagnostics':>12} {'(max)':>7} {'hover':>7} {'completion':>11} "
-          f"{'new line':>9} {'(completion)':>13} {'keyword':>8} {'(completion)':>13} {'full re-check':>14}")
+          f"{'new line':>9} {'(completion)':>13} {'keyword':>8} {'(completion)':>13} {'entry':>7} {'(completion)':>13} "
+          f"{'full re-check':>14}")
     for change in result["change"]:
         ms = {key: f"{value * 1000:.0f} ms" for key, value in change.items() if key.endswith("_s")}
         print(f"  {change['file'][-34:]:<34} {change['bytes']:>10,} {ms['change_to_diagnostics_s']:>12} "
               f"{ms['change_to_diagnostics_max_s']:>7} {ms['hover_after_change_s']:>7} "
               f"{ms['completion_after_change_s']:>11} {ms['line_break_to_diagnostics_s']:>9} "
               f"{ms['completion_after_line_break_s']:>13} {ms['keyword_to_diagnostics_s']:>8} "
-              f"{ms['completion_after_keyword_s']:>13} {ms['full_recheck_s']:>14}")
+              f"{ms['completion_after_keyword_s']:>13} {ms['entry_to_diagnostics_s']:>7} "
+              f"{ms['completion_after_entry_s']:>13} {ms['full_recheck_s']:>14}")
     if requests is None:
         return
     print(f"{requests['requests']} references on {requests['files']} files (best of {arguments.repeat} each)")

@@ -6,10 +6,10 @@ edit changes which statements the reader finds, so :func:`edsconv.lsp.incrementa
 take it, and reading the whole text again costs a third of a second on a 3 MB file. Here the
 reader (:func:`edsconv.eds.reader.read_on`) resumes at the end of the line of an entry (or of the
 section header) before the edit, in the section the edit is in, and reads until it ends a
-statement, past the edit, where the last reading ended an entry of that section with its ``;``:
-from there on the text, and so the reading, are the last ones. The entries and unreadable text
-read between replace the last ones in the section, the reader's findings about them too, and the
-nodes after them move with the lines the edit typed or deleted.
+statement, past the edit, where the last reading ended an entry of that section with its ``;``, or
+comes to the next section's header: from there on the text, and so the reading, are the last ones.
+The entries and unreadable text read between replace the last ones in the section, the reader's
+findings about them too, and the nodes after them move with the lines the edit typed or deleted.
 """
 
 from __future__ import annotations
@@ -75,10 +75,11 @@ class _Extent:
 def reread_region(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
     """The lines and syntax model of the editor's ``raw`` text, made from those of the last text by
     reading again the statements of one section an edit of printable ASCII touched (see the module);
-    None where that cannot be exact: the reading met a section header or the text's end before it met
-    the last one, a keyword of the entries read or replaced stands elsewhere in the section (which
-    entry is the duplicate may change), a finding names a line that moved, or the syntax errors come
-    near the reader's limit (:data:`~edsconv.eds.lark_reader.MAX_SYNTAX_ERRORS`)."""
+    None where that cannot be exact: the reading did not meet the last one (it met a header typed,
+    the text's end, or nothing within :data:`_READ_PAST_AT_MOST`), a keyword of the entries read or
+    replaced stands elsewhere in the section (which entry is the duplicate may change), a finding
+    names a line that moved, or the syntax errors come near the reader's limit
+    (:data:`~edsconv.eds.lark_reader.MAX_SYNTAX_ERRORS`)."""
     found = edit_since(carried, raw, printable)
     if found is None:
         return None

@@ -5,8 +5,13 @@ answers, and hover and completion answer from the last model when the records ar
 
 from __future__ import annotations
 
+import random
+import re
+from collections import Counter
+
 import pytest
 
+from conftest import SHARED_REAL
 from edsconv.eds.lark_reader import MAX_SYNTAX_ERRORS
 from edsconv.lsp.analysis import analyse
 from edsconv.lsp.incremental import Carried
@@ -164,3 +169,74 @@ def test_a_blank_line_deleted_in_a_file_with_unreadable_text_is_read_again_on_th
     analyse(base, carried=carried)
     assert_exact(base.replace("1;\n\n[Groups]", "1;\n[Groups]"), carried)
     assert carried.splice == "region" and carried.edit.lines.moved == -1
+
+
+#: Entries a random edit types, whole or their first characters
+TYPED_ENTRIES = ('Param99 = 0,,,0x0000,0xC7,2,"x","","",0,1,0;', "Foo = 1;", 'Enum1 = 0,"a";',
+                 'Assem9 = "a","",2,0x0000,,,16,Param1;', "Bar = {1,{2}};")
+
+
+def structural_edit(text: str, rng: random.Random) -> str:
+    """``text`` with one edit of where statements begin or end on a random line: a character typed
+    before or deleted at its keyword, a ``;"$[]={},`` typed or one deleted, an entry typed (whole or
+    its first characters) on a line of its own, the line deleted or doubled, broken in two, or a
+    character typed."""
+    starts = [0, *(match.end() for match in re.finditer("\n", text[:-1]))]
+    line_start = rng.choice(starts)
+    line_end = text.find("\n", line_start)
+    line_end = len(text) if line_end < 0 else line_end
+    keyword = line_start + len(text[line_start:line_end]) - len(text[line_start:line_end].lstrip())
+    at = rng.randint(line_start, line_end)
+    marks = [index for index in range(line_start, line_end) if text[index] in ';"$=,'] or [at]
+    cut = rng.choice(marks)
+    entry = rng.choice(TYPED_ENTRIES)
+    return rng.choice([
+        lambda: text[:keyword] + rng.choice("XPa1_") + text[keyword:],
+        lambda: text[:keyword] + text[keyword + 1:],
+        lambda: text[:at] + rng.choice(';"$[]={},') + text[at:],
+        lambda: text[:cut] + text[cut + 1:],
+        lambda: text[:line_start] + entry[:rng.randint(1, len(entry))] + "\n" + text[line_start:],
+        lambda: text[:line_start] + text[line_end + 1:],
+        lambda: text[:line_start] + text[line_start:line_end + 1] + text[line_start:],
+        lambda: text[:at] + "\n" + text[at:],
+        lambda: text[:at] + rng.choice("abc 012") + text[at:],
+    ])()
+
+
+def assert_structural_edits_are_exact(text: str, seed: int, edits: int) -> Counter:
+    """``edits`` structural edits of ``text`` in a row, each analysis compared with a fresh one; how each
+    was read (and whether hover answered early), counted."""
+    rng = random.Random(seed)
+    carried = Carried()
+    analyse(text, carried=carried)
+    made: Counter = Counter()
+    for _ in range(edits):
+        text = structural_edit(text, rng)
+        early = assert_exact(text, carried)
+        made[carried.splice + (" early" if early else "")] += 1
+    return made
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_structural_edits_of_the_example_answer_as_a_fresh_analysis(seed):
+    made = assert_structural_edits_are_exact(EXAMPLE, seed, 24)
+    assert made["region early"] > 0
+
+
+@pytest.mark.real_corpus
+@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+def test_structural_edits_of_the_largest_real_file_answer_as_a_fresh_analysis():
+    path = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
+    made = assert_structural_edits_are_exact(path.read_bytes().decode("latin-1"), 3, 6)
+    assert sum(made.values()) == 6
+
+
+if __name__ == "__main__":  # the long run the tests above sample: seed, then edits per file
+    import sys
+
+    from test_lsp_incremental import real_files
+
+    seed, edits = (int(argument) for argument in sys.argv[1:3])
+    for number, real in enumerate(real_files()):
+        print(real.name, dict(assert_structural_edits_are_exact(real.read_bytes().decode("latin-1"),
+                                                                seed * 1000 + number, edits)))

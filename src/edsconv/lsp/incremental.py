@@ -295,7 +295,8 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     section = edited.holders()[number].name
     carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, (entry,), (spliced,), position, start_at,
                                                                     last_line, lines_moved),
-                 lambda: _moved(places, at, (spliced, entry_end, lead, number, position), shift))
+                 lambda: places_spliced(places, at, at + 1, [(spliced, entry_end, lead, number, position)], shift,
+                                        offset))
     return lines, edited
 
 
@@ -395,7 +396,7 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     carried.steps += 1
     carried.reused, carried.read = len(places), 0
     carried.keep(raw, text, lines, moved_eds, new_index, LinesMoved(first_moved_line, moved),
-                 lambda: _shifted(places, at, new_end - old_end, start))
+                 lambda: places_spliced(places, at, at, [], new_end - old_end, start))
     return lines, moved_eds
 
 
@@ -452,24 +453,22 @@ def _quiet(diagnostics: list[Diagnostic], entry: Entry) -> bool:
                    and not ((d.line, d.column) == first and d.code in _ABOUT_THE_KEYWORD) for d in diagnostics)
 
 
-def _moved(places: dict[int, Place], at: int, place: Place, shift: int) -> dict[int, Place]:
-    """``places`` with the ``at``-th replaced by ``place`` and the ones after it ``shift`` characters later."""
-    replaced = dict(places)
-    replaced[place[0].offset] = place
-    return _shifted(replaced, at + 1, shift, place[0].offset)
-
-
-def _shifted(places: dict[int, Place], first: int, shift: int, edit: int) -> dict[int, Place]:
-    """``places`` with the ones from the ``first``-th on ``shift`` characters later, and the leading
-    comments of those after offset ``edit`` (the others stand before the edit)."""
+def places_spliced(places: dict[int, Place], first: int, after: int, inserted: list[Place], shift: int, edit: int,
+                   section: int = -1, moved: int = 0) -> dict[int, Place]:
+    """``places`` with the ``first``-th to before the ``after``-th replaced by ``inserted``, and those after
+    them ``shift`` characters later (their leading comments too, where they stand after offset ``edit``;
+    the others stand before the edit), ``moved`` places later in holder ``section``."""
     items = iter(places.items())
-    shifted = dict(islice(items, first))
-    if not shift:
-        shifted.update(items)
-        return shifted
-    for offset, (entry, end, lead, number, position) in items:
-        shifted[offset + shift] = (entry, end + shift, lead + shift if lead >= edit else lead, number, position)
-    return shifted
+    spliced = dict(islice(items, first))
+    spliced.update((place[0].offset, place) for place in inserted)
+    rest = islice(items, after - first, None)
+    if not shift and not moved:
+        spliced.update(rest)
+        return spliced
+    for offset, (entry, end, lead, number, position) in rest:
+        spliced[offset + shift] = (entry, end + shift, lead + shift if lead >= edit else lead, number,
+                                   position + moved if number == section else position)
+    return spliced
 
 
 def _with_entry(eds: EdsFile, number: int, position: int, entry: Entry) -> EdsFile:

@@ -32,11 +32,11 @@ from edsconv.lsp.incremental import (
     Carried,
     EntriesReplaced,
     LinesMoved,
-    Place,
     edit_since,
     lines_edited,
     nodes_after,
     note_lines_moved,
+    places_spliced,
     printable,
     with_section,
 )
@@ -115,8 +115,10 @@ def reread_region(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile]
     carried.keep(raw, text, lines, edited, new_index, EntriesReplaced(
         section.name, tuple(section.entries[resume.first:extent.after]), tuple(entries), resume.first, start_at,
         extent.first_line - 1, LinesMoved(extent.first_line, moved) if moved else None),
-        lambda: _places_spliced(places, first, extent.last + 1, entries, resume, shift,
-                                len(entries) - (extent.after - resume.first)))
+        lambda: places_spliced(places, first, extent.last + 1,
+                               [(entry, entry.end_offset, entry.lead_offset, resume.number, position)
+                                for position, entry in enumerate(entries, resume.first)],
+                               shift, resume.at, resume.number, len(entries) - (extent.after - resume.first)))
     return lines, edited
 
 
@@ -256,18 +258,3 @@ def _section_spliced(section: Section, resume: _Resume, extent: _Extent, read: S
                 *((position + moved, item) for offset, position, item in at if offset >= extent.end)]
     entries = [*islice(section.entries, first), *read.entries, *islice(section.entries, after, None)]
     return dataclasses.replace(section, entries=entries, unparsed=unparsed)
-
-
-def _places_spliced(places: dict[int, Place], first: int, after: int, read: list[Entry], resume: _Resume,
-                    shift: int, moved: int) -> dict[int, Place]:
-    """``places`` with the ``first``-th to before the ``after``-th replaced by the entries ``read``, and those
-    after them ``shift`` characters later (``moved`` places later in their section)."""
-    items = iter(places.items())
-    spliced = dict(islice(items, first))
-    number = resume.number
-    for position, entry in enumerate(read, resume.first):
-        spliced[entry.offset] = (entry, entry.end_offset, entry.lead_offset, number, position)
-    for offset, (entry, end, lead, holder, position) in islice(items, after - first, None):
-        spliced[offset + shift] = (entry, end + shift, lead + shift, holder,
-                                   position + moved if holder == number else position)
-    return spliced

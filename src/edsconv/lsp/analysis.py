@@ -26,7 +26,16 @@ from edsconv.checks import CheckMemo
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.source import as_read, split_lines
 from edsconv.eds.syntax import EdsFile, Entry
-from edsconv.lsp.incremental import Carried, Edit, EntryReplaced, LinesMoved, reread, respaced, reuse_entries
+from edsconv.lsp.incremental import (
+    Carried,
+    Edit,
+    EntryReplaced,
+    LinesMoved,
+    change_since,
+    reread,
+    respaced,
+    reuse_entries,
+)
 from edsconv.lsp.region import reread_region
 from edsconv.model import Device
 from edsconv.model.build import build
@@ -100,8 +109,9 @@ def analyse(text: str, version: int | None = None, path: str | None = None, *,
     step()
     before = carried.eds if carried is not None else None
     with paused_gc():  # reading again makes many objects too (the entries read, the lines)
-        spliced = (reread(carried, text) or respaced(carried, text) or reread_region(carried, text)) \
-            if carried is not None else None
+        change = change_since(carried, text) if carried is not None else None
+        spliced = (reread(carried, change) or respaced(carried, change) or reread_region(carried, change)) \
+            if carried is not None and change is not None else None
     lines, eds = spliced or (tuple(split_lines(text)), edsconv.parse(text, path))
     step()
     with paused_gc():

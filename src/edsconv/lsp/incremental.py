@@ -108,6 +108,43 @@ class EntryReplaced(EntriesReplaced):
 Edit = EntriesReplaced | LinesMoved
 
 
+@dataclass(frozen=True, slots=True)
+class Change:
+    """The edit that made the editor's ``raw`` of the last text ``old_raw`` (:func:`change_since`):
+    ``raw[raw_start:raw_new_end]`` in place of ``old_raw[raw_start:raw_old_end]``; the same edit of the
+    reader's texts, which count each CR LF as one character: ``text[start:new_end]`` in place of
+    ``[start, old_end)``; the lines it added (removed, when negative); the last syntax model and line
+    index. Made once per analysis for the splices that may take the edit (:func:`reread`,
+    :func:`respaced`, :func:`edsconv.lsp.region.reread_region`)."""
+
+    eds: EdsFile
+    index: LineIndex
+    old_raw: str
+    raw: str
+    raw_start: int
+    raw_old_end: int
+    raw_new_end: int
+    text: str
+    start: int
+    old_end: int
+    new_end: int
+    moved: int
+
+    def typed(self, allowed: Callable[[str, int, int], bool]) -> bool:
+        """Whether what the edit took away and what it typed are both ``allowed``."""
+        return allowed(self.old_raw, self.raw_start, self.raw_old_end) and allowed(self.raw, self.raw_start,
+                                                                                   self.raw_new_end)
+
+    def new_index(self) -> LineIndex:
+        """The line index of ``text``; made before the nodes after the edit move (they use ``index``)."""
+        return self.index.edited(self.text, self.start, self.old_end, self.new_end)
+
+    def new_lines(self, lines: tuple[str, ...]) -> tuple[str, ...]:
+        """``lines``, the last text's as the editor counts them, made those of ``raw``; before the move."""
+        return lines_edited(lines, self.index.position(self.start)[0] - 1, self.old_raw, self.raw, self.raw_start,
+                            self.raw_old_end)
+
+
 #: Where an entry stands in the text of the analysis that holds it (its own offsets may be those of an
 #: older text it was first read from): the entry, just after its ``;``, where its first leading
 #: comment starts (else where it starts), its section's index in :meth:`EdsFile.holders` and its
@@ -153,7 +190,7 @@ class Carried:
         """Make ``places`` those of ``text``, and what the memos hold follow the lines the edits since they
         were last read moved: done after hover has had its answer, just before the memos are read
         (:func:`edsconv.lsp.analysis.analyse`), and before the next edit is looked at, should a newer
-        text have stopped that analysis first (:func:`edit_since`, :func:`reuse_entries`)."""
+        text have stopped that analysis first (:func:`change_since`, :func:`reuse_entries`)."""
         if self.places_to_come is not None:
             self.places = self.places_to_come()
             self.starts, self.places_to_come = list(self.places), None
@@ -246,12 +283,12 @@ def note_lines_moved(carried: Carried, firsts: dict[LineIndex, int], first_line:
     carried.pending.append(LinesMoved(first_line, moved))
 
 
-def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
-    """The lines and syntax model of the editor's ``raw`` text, made from those of the last text by
+def reread(carried: Carried, change: Change) -> tuple[tuple[str, ...], EdsFile] | None:
+    """The lines and syntax model of the editor's text after ``change``, made from those of the last text by
     reading again the one entry the edit changed; None when the edit did more than change that entry's
     fields (see the module).
 
-    Exact because the reader, coming to that entry's start in the text it makes of ``raw``, reads it as
+    Exact because the reader, coming to that entry's start in the text it makes of the editor's, reads it as
     it does here, and then finds the text after it as it was; its other entries keep their places, and
     the nodes after it their lines, or move with the lines the edit typed or deleted (:func:`note_lines_moved`;
     not where a finding's message names a line). The last text was ASCII and the edit typed nothing
@@ -259,11 +296,10 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     text (:func:`edsconv.eds.source.as_read`) is its last one with the same edit, each CR LF counted
     as one character.
     """
-    found = edit_since(carried, raw, printable)
-    if found is None:
+    if not change.typed(printable):
         return None
-    eds, index, (raw_start, raw_old_end), (text, start, old_end, new_end, moved) = found
-    old_raw = carried.raw
+    eds, index, text, start, new_end, moved = change.eds, change.index, change.text, change.start, change.new_end, \
+        change.moved
     at = bisect.bisect_right(carried.starts, start) - 1
     if at < 0:
         return None
@@ -276,11 +312,9 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     keyword, body, entry_end = read
     rest = REST_OF_LINE.match(text, entry_end)
     if keyword != entry.keyword or start < body or new_end > entry_end or entry_end != end + shift or rest is None \
-            or not _quiet(eds.diagnostics, entry) or not read_statement_by_statement(raw, text) \
-            or moved and any(d.code in NAMING_A_LINE for d in eds.diagnostics):
+            or not _quiet(eds.diagnostics, entry) or moved and any(d.code in NAMING_A_LINE for d in eds.diagnostics):
         return None
-    lines = lines_edited(carried.lines, index.position(start)[0] - 1, old_raw, raw, raw_start, raw_old_end)
-    new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
+    lines, new_index = change.new_lines(carried.lines), change.new_index()
     spliced = Entry.unread(keyword, offset, entry_end, new_index)
     if entry.lead_offset != entry.offset:
         spliced.leading_comments = list(entry.leading_comments)
@@ -293,31 +327,30 @@ def reread(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None
     carried.steps += 1
     carried.reused, carried.read = len(places) - 1, 1
     section = edited.holders()[number].name
-    carried.keep(raw, text, lines, edited, new_index, EntryReplaced(section, (entry,), (spliced,), position, start_at,
-                                                                    last_line, lines_moved),
+    carried.keep(change.raw, text, lines, edited, new_index, EntryReplaced(section, (entry,), (spliced,), position,
+                                                                           start_at, last_line, lines_moved),
                  lambda: places_spliced(places, at, at + 1, [(spliced, entry_end, lead, number, position)], shift,
                                         offset))
     return lines, edited
 
 
-def edit_since(carried: Carried, raw: str, allowed: Callable[[str, int, int], bool]) \
-        -> tuple[EdsFile, LineIndex, tuple[int, int], tuple[str, int, int, int, int]] | None:
-    """The last syntax model and line index, where the edit that made ``raw`` of the last text starts and
-    ends in it (:func:`changed_span`), and the edit in the reader's texts (:func:`_as_read`); None
-    unless the last model may be spliced: the last text was ASCII (one character a byte, no byte
-    order mark), the last full reading is recent enough (:data:`FULL_READ_EVERY`), ``raw`` differs,
-    the changed spans of both texts are ``allowed`` and the file's first line end stays."""
+def change_since(carried: Carried, raw: str) -> Change | None:
+    """The edit that made the editor's ``raw`` of the last text; None unless the last model may be spliced:
+    the last text was ASCII (one character a byte, no byte order mark) and the edit typed ASCII, the last
+    full reading is recent enough (:data:`FULL_READ_EVERY`), ``raw`` differs, the file's first line end
+    stays, and the reader reads ``raw`` statement by statement."""
     carried.settle()
     eds, index, old_raw = carried.eds, carried.index, carried.raw
     if eds is None or index is None or carried.steps >= FULL_READ_EVERY or eds.encoding != "ascii" \
-            or raw == old_raw:
+            or raw == old_raw or newline_of(raw) != eds.newline:
         return None
     raw_start, raw_old_end, raw_new_end = changed_span(old_raw, raw)
-    if not (allowed(old_raw, raw_start, raw_old_end) and allowed(raw, raw_start, raw_new_end)) \
-            or newline_of(raw) != eds.newline:
+    if not raw[raw_start:raw_new_end].isascii():
+        return None  # the text is read again whole: it decodes differently
+    text, start, old_end, new_end, moved = _as_read(carried, eds.newline, raw, raw_start, raw_old_end, raw_new_end)
+    if not read_statement_by_statement(raw, text):
         return None
-    return eds, index, (raw_start, raw_old_end), _as_read(carried, eds.newline, raw, raw_start, raw_old_end,
-                                                           raw_new_end)
+    return Change(eds, index, old_raw, raw, raw_start, raw_old_end, raw_new_end, text, start, old_end, new_end, moved)
 
 
 def _after_entry_moved(carried: Carried, eds: EdsFile, edited: EdsFile, at: int, first_line: int,
@@ -364,8 +397,8 @@ def lines_edited(lines: tuple[str, ...], first: int, old_raw: str, raw: str, sta
     return lines[:first] + tuple(split_lines(raw[line_start:region_end])) + lines[last + 1:]
 
 
-def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
-    """The lines and syntax model of the editor's ``raw`` text when the edit typed or deleted nothing but
+def respaced(carried: Carried, change: Change) -> tuple[tuple[str, ...], EdsFile] | None:
+    """The lines and syntax model of the editor's text after ``change`` when it typed or deleted nothing but
     whole blank lines, outside every entry (Enter at the end of a line, a blank line deleted): the last
     syntax model with every node after the edit on its new line (:func:`note_lines_moved`); None for any
     other edit, or in a file with text the reader could not parse (whose extent blank lines may change)
@@ -375,28 +408,24 @@ def respaced(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | No
     and a comment keeps its owner (the statement whose last line it stands on, else the next one).
     The line ends typed must be those of the file (the reader keeps its first one).
     """
-    found = edit_since(carried, raw, _blank_lines)
-    if found is None:
+    eds, index, start, moved = change.eds, change.index, change.start, change.moved
+    if not change.typed(_blank_lines) or any(section.unparsed for section in eds.holders()) \
+            or any(d.code in NAMING_A_LINE for d in eds.diagnostics):
         return None
-    eds, index, (raw_start, raw_old_end), (text, start, old_end, new_end, moved) = found
-    if any(section.unparsed for section in eds.holders()) or any(d.code in NAMING_A_LINE for d in eds.diagnostics):
-        return None
-    old_raw = carried.raw
     at = bisect.bisect_left(carried.starts, start)  # the first entry after the edit
-    if at > 0 and carried.places[carried.starts[at - 1]][1] > start or not read_statement_by_statement(raw, text):
+    if at > 0 and carried.places[carried.starts[at - 1]][1] > start:
         return None  # inside an entry
-    first_line, first_moved_line = index.position(start)[0], index.position(old_end)[0]
+    first_line, first_moved_line = index.position(start)[0], index.position(change.old_end)[0]
     firsts = nodes_after(carried, eds, at, start, first_line)
-    new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
-    lines = lines_edited(carried.lines, first_line - 1, old_raw, raw, raw_start, raw_old_end)
+    lines, new_index = change.new_lines(carried.lines), change.new_index()
     if moved:
         note_lines_moved(carried, firsts, first_moved_line, moved)
     moved_eds = dataclasses.replace(eds, diagnostics=[d.moved(first_moved_line, moved) for d in eds.diagnostics])
     places = carried.places
     carried.steps += 1
     carried.reused, carried.read = len(places), 0
-    carried.keep(raw, text, lines, moved_eds, new_index, LinesMoved(first_moved_line, moved),
-                 lambda: places_spliced(places, at, at, [], new_end - old_end, start))
+    carried.keep(change.raw, change.text, lines, moved_eds, new_index, LinesMoved(first_moved_line, moved),
+                 lambda: places_spliced(places, at, at, [], change.new_end - change.old_end, start))
     return lines, moved_eds
 
 

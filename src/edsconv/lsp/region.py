@@ -22,7 +22,7 @@ from itertools import chain, islice
 
 from edsconv.diagnostics import Diagnostic
 from edsconv.eds.lark_reader import MAX_SYNTAX_ERRORS
-from edsconv.eds.reader import read_on, read_statement_by_statement
+from edsconv.eds.reader import read_on
 from edsconv.eds.reader_rules import NAMING_A_LINE
 from edsconv.eds.source import LineIndex
 from edsconv.eds.statements import SyntaxBuilder
@@ -30,10 +30,9 @@ from edsconv.eds.syntax import EdsFile, Entry, Section
 from edsconv.lsp.incremental import (
     REST_OF_LINE,
     Carried,
+    Change,
     EntriesReplaced,
     LinesMoved,
-    edit_since,
-    lines_edited,
     nodes_after,
     note_lines_moved,
     places_spliced,
@@ -72,25 +71,23 @@ class _Extent:
     first_line: int
 
 
-def reread_region(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile] | None:
-    """The lines and syntax model of the editor's ``raw`` text, made from those of the last text by
+def reread_region(carried: Carried, change: Change) -> tuple[tuple[str, ...], EdsFile] | None:
+    """The lines and syntax model of the editor's text after ``change``, made from those of the last text by
     reading again the statements of one section an edit of printable ASCII touched (see the module);
     None where that cannot be exact: the reading did not meet the last one (it met a header typed,
     the text's end, or nothing within :data:`_READ_PAST_AT_MOST`), a keyword of the entries read or
     replaced stands elsewhere in the section (which entry is the duplicate may change), a finding
     names a line that moved, or the syntax errors come near the reader's limit
     (:data:`~edsconv.eds.lark_reader.MAX_SYNTAX_ERRORS`)."""
-    found = edit_since(carried, raw, printable)
-    if found is None:
-        return None
-    eds, index, (raw_start, raw_old_end), (text, start, old_end, new_end, moved) = found
-    if moved and any(d.code in NAMING_A_LINE for d in eds.diagnostics) or not read_statement_by_statement(raw, text):
+    eds, index, start, old_end, new_end, moved = change.eds, change.index, change.start, change.old_end, \
+        change.new_end, change.moved
+    if not change.typed(printable) or moved and any(d.code in NAMING_A_LINE for d in eds.diagnostics):
         return None
     resume = _resume_point(carried, eds, index, start)
     if resume is None:
         return None
     shift, header = new_end - old_end, _next_header(eds, index, resume.number, old_end)
-    new_index = index.edited(text, start, old_end, new_end)  # before the moves: the last text's nodes use index
+    new_index = change.new_index()
     read = _read_again(carried, eds, new_index, resume, shift, new_end, header)
     extent = _extent(carried, eds, index, resume, read, shift, header) if read is not None else None
     section = eds.holders()[resume.number]
@@ -101,7 +98,7 @@ def reread_region(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile]
     entries = read.current_section.entries
     # from here to the moves, positions are the last text's: the moves renumber the lines of its index
     start_at = (index.position(resume.at)[0] + 1, 1)
-    lines = lines_edited(carried.lines, index.position(start)[0] - 1, carried.raw, raw, raw_start, raw_old_end)
+    lines = change.new_lines(carried.lines)
     diagnostics = _diagnostics_spliced(eds.diagnostics, index.position(resume.at), index.position(extent.end),
                                        read.eds.diagnostics, extent.first_line, moved)
     replaced = _section_spliced(section, resume, extent, read.current_section, index)
@@ -112,7 +109,7 @@ def reread_region(carried: Carried, raw: str) -> tuple[tuple[str, ...], EdsFile]
     places, first = carried.places, bisect.bisect_right(carried.starts, resume.at)
     carried.steps += 1
     carried.reused, carried.read = len(places) - (extent.after - resume.first), len(entries)
-    carried.keep(raw, text, lines, edited, new_index, EntriesReplaced(
+    carried.keep(change.raw, change.text, lines, edited, new_index, EntriesReplaced(
         section.name, tuple(section.entries[resume.first:extent.after]), tuple(entries), resume.first, start_at,
         extent.first_line - 1, LinesMoved(extent.first_line, moved) if moved else None),
         lambda: places_spliced(places, first, extent.last + 1,

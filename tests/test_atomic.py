@@ -119,6 +119,27 @@ def test_a_signal_while_writing_leaves_nothing(tmp_path: Path, monkeypatch: pyte
     assert list(tmp_path.iterdir()) == []
 
 
+def test_a_second_signal_while_cleaning_up_leaves_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                          sigterm_raises: None) -> None:
+    # a pool ending its workers: our SIGTERM, then concurrent.futures' own when the first worker exits
+    # (CI found a temporary file left by `fmt -j 2` after a SIGHUP)
+    real_fsync, real_unlink = os.fsync, Path.unlink
+
+    def fsync_then_signal(descriptor: int) -> None:
+        real_fsync(descriptor)
+        signal.pthread_kill(threading.get_ident(), signal.SIGTERM)
+
+    def signal_then_unlink(path: Path, missing_ok: bool = False) -> None:
+        signal.pthread_kill(threading.get_ident(), signal.SIGTERM)
+        real_unlink(path, missing_ok=missing_ok)
+
+    monkeypatch.setattr(atomic.os, "fsync", fsync_then_signal)
+    monkeypatch.setattr(Path, "unlink", signal_then_unlink)
+    with pytest.raises(Interrupted):
+        write_all_atomically([(tmp_path / "a.xml", b"a"), (tmp_path / "b.xml", b"b")], inputs=())
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_signal_between_the_renames_waits_until_both_are_done(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
                                                                 sigterm_raises: None) -> None:
     real_replace = os.replace

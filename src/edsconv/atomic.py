@@ -11,7 +11,8 @@ and the files ``fmt`` and ``lint --fix`` rewrite go through :func:`rewrite_in_pl
   complete are they renamed over their targets, one after another, with SIGINT,
   SIGTERM and SIGHUP held back (so a signal comes either before the first rename,
   and nothing is written, or after the last);
-- any failure or signal before the renames removes the temporary files;
+- any failure or signal before the renames removes the temporary files (with the signals held
+  back, so that a second signal cannot cut that short);
 - a new file gets the mode the umask gives (``0o666 & ~umask``), a replaced file
   keeps its mode (and, where the user may set them, its owner and group);
 - a symbolic link is written through: its target is replaced, the link stays;
@@ -77,8 +78,11 @@ def write_all_atomically(files: Sequence[tuple[Path, bytes]], *, inputs: Collect
                 with _naming(path):
                     os.replace(temporary, target)
     except BaseException:
-        for temporary in temporaries:
-            temporary.unlink(missing_ok=True)
+        # a second signal must not cut the cleanup short: a pool ending its workers sends SIGTERM
+        # again when the first one exits (concurrent.futures' terminate_broken), a user presses Ctrl-C twice
+        with signals_held():
+            for temporary in temporaries:
+                temporary.unlink(missing_ok=True)
         raise
     for path, target, data in special:
         with _naming(path), open(target, "wb") as stream:
@@ -139,8 +143,9 @@ def _complete_temporary(target: Path, data: bytes, temporaries: list[Path]) -> N
     with the mode ``target`` will have, flushed to disk."""
     previous = _status(target)
     target.parent.mkdir(parents=True, exist_ok=True)
-    descriptor, name = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
-    temporaries.append(Path(name))
+    with signals_held():  # a signal between the two would leave a temporary file no one knows of
+        descriptor, name = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+        temporaries.append(Path(name))
     with os.fdopen(descriptor, "wb") as stream:
         stream.write(data)
         stream.flush()

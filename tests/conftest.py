@@ -4,12 +4,31 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 import edsconv
 from edsconv.eds.syntax import EdsFile
 
 REPO = Path(__file__).resolve().parents[1]
 #: Real vendor EDS files, beside the repository (read-only, never copied in).
 SHARED_REAL = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"
+
+
+def needs_real_corpus(test):
+    """A test over the real corpus: marked ``real_corpus`` (.ci/test-matrix's newest-release runs leave
+    those out) and skipped when ../shared/corpus/real is not beside the repository."""
+    skip = pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="../shared/corpus/real is not beside the repository")
+    return pytest.mark.real_corpus(skip(test))
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """A test run with a real file as a parameter is a test over the real corpus, whatever else its
+    parameters hold: one rule, where each module marked some of them and not others."""
+    for item in items:
+        parameters = getattr(item, "callspec", None)
+        if parameters and any(isinstance(value, Path) and value.is_relative_to(SHARED_REAL)
+                              for value in parameters.params.values()):
+            item.add_marker(pytest.mark.real_corpus)
 
 
 def codes(eds: EdsFile) -> list[tuple[str, int, int]]:

@@ -8,7 +8,7 @@ import collections
 import pytest
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.diagnostics import load_rules
 
 MARK = "$ HERE"
@@ -313,8 +313,7 @@ REAL_COUNTS = {"EDS312": 1, "EDS314": 86, "EDS315": 4, "EDS317": 193, "EDS318": 
                "EDS322": 2, "EDS324": 20, "EDS326": 200, "EDS337": 4, "EDS343": 6, "EDS346": 7}
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@needs_real_corpus
 def test_real_corpus_counts():
     counts = collections.Counter()
     for path in sorted(SHARED_REAL.glob("*")):

@@ -13,7 +13,7 @@ import collections
 import pytest
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.diagnostics import Severity, load_rules
 
 #: The smallest EDS these checks accept: Tables C.6, C.8 and C.27, nothing optional.
@@ -291,8 +291,7 @@ def test_odd_input_never_raises(text):
 REAL_CORPUS_COUNTS = {"EDS204": 1, "EDS207": 3, "EDS210": 8, "EDS215": 3, "EDS216": 1, "EDS227": 18}
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@needs_real_corpus
 def test_real_corpus_counts_per_code():
     counts: collections.Counter[str] = collections.Counter()
     for path in sorted(SHARED_REAL.glob("*")):

@@ -11,7 +11,7 @@ import pytest
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv import cip_tables
 from edsconv.cip_tables import Known
 from edsconv.lint import lint_file
@@ -21,7 +21,6 @@ from edsconv.model.cip_build import attach
 
 CORPUS = REPO / "corpus"
 REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
-needs_real = pytest.mark.skipif(not REAL, reason="../shared/corpus/real is not there")
 
 #: code -> (a file of ours that breaks the rule once, the file it was derived from, which does not)
 CASES = {
@@ -217,13 +216,13 @@ def real_diagnostics() -> list:
     return [d for path in REAL for d in lint_file(str(path)).diagnostics]
 
 
-@needs_real
+@needs_real_corpus
 def test_real_files_draw_no_beyond_2003_note():
     """Everything the real files write beyond the 2003 text is modelled or vendor-specific."""
     assert [d.format() for d in real_diagnostics() if d.code in BEYOND_2003] == []
 
 
-@needs_real
+@needs_real_corpus
 def test_real_files_draw_no_newer_error_and_four_icon_warnings():
     """No new error on a real file; the four icons that are not ICOs are warnings (3 BMP files, 1 neither)."""
     newer = [d for d in real_diagnostics() if d.code.startswith("EDS5")]

@@ -24,7 +24,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv import cip_tables as cip
 from edsconv import spec_tables as spec
 from edsconv.diagnostics import Severity, load_rules
@@ -37,7 +37,6 @@ from edsconv.model import values
 CIP_CORPUS = REPO / "corpus" / "cip"
 IDIOMS_DIR = REPO / "corpus" / "idioms"
 REAL_FILES = sorted(p for p in SHARED_REAL.glob("*") if p.suffix in (".eds", ".EDS")) if SHARED_REAL.is_dir() else []
-needs_real = pytest.mark.skipif(not REAL_FILES, reason="../shared/corpus/real is not there")
 
 
 @functools.cache
@@ -316,7 +315,7 @@ def load_text(text: str) -> EdsFile:
 # --- against the real files --------------------------------------------------------------
 
 
-@needs_real
+@needs_real_corpus
 def test_real_files_write_nothing_unknown():
     unknown = set()
     for path in REAL_FILES:
@@ -348,7 +347,7 @@ def _real_counts() -> tuple[dict[int, set[str]], dict[int, set[str]]]:
     return entries, sections
 
 
-@needs_real
+@needs_real_corpus
 def test_recorded_file_counts_are_the_real_files():
     entries, sections = _real_counts()
     wrong = []
@@ -361,7 +360,7 @@ def test_recorded_file_counts_are_the_real_files():
     assert wrong == []
 
 
-@needs_real
+@needs_real_corpus
 def test_real_values_fit_the_tables():
     problems = []
     for path in REAL_FILES:
@@ -371,7 +370,7 @@ def test_real_values_fit_the_tables():
     assert problems == []
 
 
-@needs_real
+@needs_real_corpus
 def test_real_object_class_codes_agree_with_the_tables():
     seen = 0
     for path in REAL_FILES:
@@ -383,7 +382,7 @@ def test_real_object_class_codes_agree_with_the_tables():
     assert seen == 296
 
 
-@needs_real
+@needs_real_corpus
 def test_real_icon_contents_are_base64():
     icons = 0
     for path in REAL_FILES:
@@ -583,7 +582,7 @@ def _real_lint() -> list:
     return [d for path in REAL_FILES for d in lint_file(str(path)).diagnostics]
 
 
-@needs_real
+@needs_real_corpus
 @pytest.mark.parametrize("row", idioms(), ids=lambda row: row["file"])
 def test_idiom_evidence_is_the_real_files(row):
     code = max(row["codes_phase1"].split(","))

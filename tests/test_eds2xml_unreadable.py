@@ -6,11 +6,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.diff import diff
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
@@ -83,7 +82,7 @@ def test_an_unreadable_identity_is_still_refused():
     assert refusal.code == "XML103" and "ProdCode" in refusal.message
 
 
-@pytest.mark.skipif(not REAL, reason="../shared/corpus/real is absent")
+@needs_real_corpus
 def test_every_real_file_is_converted():
     refused = {}
     for path in REAL:

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from tests.conftest import REPO, SHARED_REAL
+from tests.conftest import REPO, SHARED_REAL, needs_real_corpus
 
 import edsconv
 from edsconv import spec_tables as tables
@@ -28,7 +28,6 @@ from edsconv.model.values import PathItem, StringIMember, to_real
 CORPUS = sorted(p for p in (REPO / "corpus").rglob("*")
                 if p.suffix.lower() == ".eds" and not {"shall", "allowed"} & set(p.parts))
 REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
-needs_real = pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="../shared/corpus/real is absent")
 
 
 def round_trip(device: Device) -> Device:
@@ -67,8 +66,7 @@ def test_device_to_eds_round_trips_the_corpus(path: Path) -> None:
     assert_round_trip(path)
 
 
-@needs_real
-@pytest.mark.real_corpus
+@needs_real_corpus
 @pytest.mark.parametrize("path", REAL, ids=lambda p: p.name[:60])
 def test_device_to_eds_round_trips_real_files(path: Path) -> None:
     assert_round_trip(path)
@@ -243,8 +241,7 @@ def test_canonical_keeps_content_corpus(path: Path) -> None:
     check_canonical(path)
 
 
-@needs_real
-@pytest.mark.real_corpus
+@needs_real_corpus
 @pytest.mark.parametrize("path", REAL, ids=lambda p: p.name[:60])
 def test_canonical_keeps_content_real(path: Path) -> None:
     check_canonical(path)

@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv import analyse, parse
 from edsconv.cli import cli
 from edsconv.describe import describe
@@ -213,7 +213,7 @@ def test_page_of_dense_parameters_is_under_3x_the_eds() -> None:
     assert _generated(lambda g: itertools.chain(["[Params]\n"], map(g.dense_param, range(1, 2001)))) < 3
 
 
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="the real corpus (../shared) is not here")
+@needs_real_corpus
 def test_page_of_the_largest_real_file_is_under_3x_the_eds() -> None:
     largest = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
     assert len(page_of(largest).encode()) < 3 * largest.stat().st_size  # 2.0x when measured
@@ -249,6 +249,7 @@ PARTS = 4
 
 
 @needs_chromium
+@pytest.mark.page_sweep
 @pytest.mark.parametrize("part", range(PARTS))
 def test_every_page_renders_without_console_errors(browser: chromium.Chromium, tmp_path: Path, part: int) -> None:
     inputs = _inputs()[part::PARTS]

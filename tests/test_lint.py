@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv import lint
 from edsconv import parallel as workers
 from edsconv.cli import cli
@@ -300,8 +300,7 @@ def test_pre_commit_hook_definition():
     assert "files: (?i)\\.eds$" in text
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="no ../shared/corpus/real beside the repository")
+@needs_real_corpus
 def test_real_corpus_runs_through_and_reports_every_file():
     result = edsconv("lint", "--format", "json", str(SHARED_REAL))
     assert result.returncode in (0, 1), result.stderr

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.eds.locate import locate, value_end, word_at
 from edsconv.lsp import actions, navigation
 from edsconv.lsp.analysis import analyse
@@ -67,8 +67,7 @@ def test_references_cover_members_connections_groups_paths_and_paired_entries():
     assert occurrence_at(analysis.spans, 95, 26) is None
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not REAL, reason="shared real EDS corpus not present")
+@needs_real_corpus
 @pytest.mark.parametrize("path", REAL[::7], ids=lambda p: p.name[:60])
 def test_every_span_of_a_real_file_spells_what_it_names(path):
     text = edsconv.eds.source.decode(path.read_bytes()).text

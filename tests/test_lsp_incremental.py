@@ -11,7 +11,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.lsp.analysis import Analysis, Superseded, analyse
 from edsconv.lsp.incremental import FULL_READ_EVERY, Carried, changed_lines
 from edsconv.model import Reference
@@ -129,16 +129,16 @@ def test_any_sequence_of_edits_inside_lines_answers_as_a_fresh_analysis(edits):
 
 
 def largest_real_file() -> str:
-    if not SHARED_REAL.is_dir():
-        pytest.skip("the real corpus (../shared) is not beside the repository")
     path = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
     return path.read_text(encoding="latin-1")
 
 
+@needs_real_corpus
 def test_random_edits_of_the_largest_real_file_answer_as_a_fresh_analysis():
     assert_incremental_is_exact(largest_real_file(), 5, 8)
 
 
+@needs_real_corpus
 def test_a_keystroke_inside_a_value_reads_only_its_entry_and_builds_only_its_record():
     text = largest_real_file()
     carried = Carried()
@@ -490,8 +490,7 @@ def real_files() -> list:
     return sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@needs_real_corpus
 @pytest.mark.parametrize("index", range(len(real_files())))
 def test_edits_of_every_real_file_answer_as_a_fresh_analysis(index):
     # line ends, encodings and layouts as the vendors wrote them (CR LF files found the reader's

@@ -11,7 +11,7 @@ from collections import Counter
 
 import pytest
 
-from conftest import SHARED_REAL
+from conftest import SHARED_REAL, needs_real_corpus
 from edsconv.eds.lark_reader import MAX_SYNTAX_ERRORS
 from edsconv.lsp.analysis import analyse
 from edsconv.lsp.incremental import Carried
@@ -223,8 +223,7 @@ def test_structural_edits_of_the_example_answer_as_a_fresh_analysis(seed):
     assert made["region early"] > 0
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@needs_real_corpus
 def test_structural_edits_of_the_largest_real_file_answer_as_a_fresh_analysis():
     path = max(SHARED_REAL.glob("*.eds"), key=lambda p: p.stat().st_size)
     made = assert_structural_edits_are_exact(path.read_bytes().decode("latin-1"), 3, 6)

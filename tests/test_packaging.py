@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import REPO
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 
 PYPROJECT = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))
 #: Tools the tests fetch from a registry once and keep (as pre-commit keeps its environments).
@@ -55,12 +55,23 @@ def test_the_test_matrix_script_is_valid_bash_and_covers_every_allowed_python():
     subprocess.run(["bash", "-n", str(script)], check=True)
     text = script.read_text(encoding="utf-8")
     assert 'run minimum "${pythons[0]}" "not tools" -c "$root/.ci/constraints-min.txt"' in text
-    assert 'pytest -q -n 2 -m "$markers"' in text and '"not tools and not real_corpus and not mutation_run"' in text
+    assert 'pytest -q -n 2 -m "$markers"' in text
+    assert '"not tools and not real_corpus and not mutation_run and not page_sweep"' in text
     assert "pytest-xdist" in " ".join(PYPROJECT["project"]["optional-dependencies"]["test"])
     classifiers = PYPROJECT["project"]["classifiers"]
     floor = int(PYPROJECT["project"]["requires-python"].removeprefix(">=3."))
     assert [c for c in classifiers if re.fullmatch(r"Programming Language :: Python :: 3\.\d+", c)] == [
         f"Programming Language :: Python :: 3.{minor}" for minor in range(floor, 14)]
+
+
+@needs_real_corpus
+def test_every_test_of_a_real_file_is_marked_real_corpus(request: pytest.FixtureRequest) -> None:
+    # the newest-release runs leave real_corpus out; a real file named in a test's id without the mark
+    # was checked there after all (244 were, in ten modules, before tests/conftest.py marked them)
+    names = [path.name for path in SHARED_REAL.iterdir() if path.suffix.lower() == ".eds"]
+    unmarked = [item.nodeid for item in request.session.items
+                if any(name in item.nodeid for name in names) and item.get_closest_marker("real_corpus") is None]
+    assert len(names) > 50 and unmarked == []
 
 
 @pytest.fixture(scope="module")

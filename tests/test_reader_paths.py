@@ -17,7 +17,7 @@ from hypothesis import example, given
 from hypothesis import strategies as st
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.eds.reader import parse_with_lark
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, Unparsed
 from edsconv.eds.writer import write
@@ -90,8 +90,7 @@ def test_own_corpus_reads_the_same_both_ways(path: Path):
     assert_same_reading(path.read_bytes())
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not REAL, reason="the shared real corpus is absent")
+@needs_real_corpus
 @pytest.mark.parametrize("path", REAL, ids=lambda p: p.name)
 def test_real_corpus_reads_the_same_both_ways(path: Path):
     assert_same_reading(path.read_bytes())

@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.diff import diff
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
@@ -61,8 +61,7 @@ def test_own_corpus_round_trips(path: Path):
     assert_round_trips(path)
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not REAL, reason="the shared real corpus is absent")
+@needs_real_corpus
 @pytest.mark.parametrize("path", REAL, ids=lambda p: p.name)
 def test_real_corpus_round_trips(path: Path):
     assert_round_trips(path)

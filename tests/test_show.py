@@ -14,18 +14,17 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import edsconv
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.cli import cli
 from edsconv.cli.show import json_text, plain_text, render
 from edsconv.describe import SECTIONS, describe
 from edsconv.model.epath import decode_path
 from edsconv.model.values import PathItem
 
-REPO = Path(__file__).resolve().parents[1]
 EXAMPLE = REPO / "corpus" / "examples" / "io_adapter.eds"
 SPEC = sorted((REPO / "corpus" / "spec").glob("*.eds"))
 OWN = sorted((REPO / "corpus").rglob("*.eds"))
 BROKEN = sorted((REPO / "corpus" / "broken").glob("*.eds"))
-SHARED_REAL = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"
 REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
@@ -302,7 +301,7 @@ def test_every_spec_figure_describes_and_renders(path: Path):
     assert result.return_value == 0
 
 
-@pytest.mark.skipif(not REAL, reason="the real corpus is not beside the repository")
+@needs_real_corpus
 def test_real_corpus_describes_and_renders():
     from rich.console import Console
 
@@ -351,7 +350,7 @@ def test_piped_text_lays_out_columns_and_rows_of_several_lines(example: dict):
                          "2       Diagnostics     Param4 Temperature Limit"]
 
 
-@pytest.mark.skipif(not REAL, reason="the real corpus is not beside the repository")
+@needs_real_corpus
 def test_real_corpus_renders_as_piped_text():
     for path in REAL:
         described = document(path)

@@ -12,7 +12,7 @@ import logging
 import pytest
 
 import edsconv
-from conftest import SHARED_REAL
+from conftest import SHARED_REAL, needs_real_corpus
 from edsconv.model.values import StringIMember
 
 
@@ -90,8 +90,7 @@ def eds_pie_field(name: str, section: str, keyword: str, index: int):
         logging.disable(logging.NOTSET)
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@needs_real_corpus
 @pytest.mark.parametrize(("name", "keyword", "attribute", "expected"), [
     (TI_DISCRETE_IO, "ProdCode", "product_code", 6402), (METTLER_IND131, "MinRev", "minor_revision", 2)])
 def test_edsconv_and_eds_pie_read_the_same_identity(name, keyword, attribute, expected):
@@ -101,8 +100,7 @@ def test_edsconv_and_eds_pie_read_the_same_identity(name, keyword, attribute, ex
     assert device.erroneous[("Device", keyword, 0)] == "EDS103"
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@needs_real_corpus
 def test_a_bool_default_255_is_no_bool_where_eds_pie_keeps_the_text():
     # the one difference left, by decision: a BOOL holds 0 or 1, so 255 has no reading as a BOOL
     # (EDS102); eds-pie leaves the field untyped and keeps the text

@@ -9,7 +9,7 @@ import pytest
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.model import MODULE, Connection, Device, Port, Reference
 from edsconv.model.values import PathItem
 from edsconv.xml.commnet import commnet_profile, read_commnet_profile
@@ -52,8 +52,7 @@ def test_corpus_round_trip(path):
     assert_round_trip(built(path))
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present")
+@needs_real_corpus
 def test_real_corpus_round_trip():
     assert len(REAL) >= 50
     failures = []

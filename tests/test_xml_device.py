@@ -8,7 +8,7 @@ import pytest
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REPO, SHARED_REAL, needs_real_corpus
 from edsconv.model import MODULE, Device, Reference
 from edsconv.model.values import PathItem, Revision
 from edsconv.xml.common import EDSCONV, Header, serialise
@@ -48,8 +48,7 @@ def test_corpus_round_trip(path):
     assert_round_trip(edsconv.build(edsconv.load(path)))
 
 
-@pytest.mark.real_corpus
-@pytest.mark.skipif(not REAL, reason="shared real EDS corpus not present")
+@needs_real_corpus
 @pytest.mark.parametrize("path", REAL, ids=lambda p: p.name)
 def test_real_round_trip(path):
     assert_round_trip(edsconv.build(edsconv.load(path)))

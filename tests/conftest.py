@@ -14,11 +14,19 @@ REPO = Path(__file__).resolve().parents[1]
 SHARED_REAL = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"
 
 
+#: A test over the real corpus: marked ``real_corpus`` (.ci/test-matrix's newest-release runs leave those
+#: out) and skipped when ../shared/corpus/real is not beside the repository (a module's ``pytestmark``).
+REAL_CORPUS_MARKS = [
+    pytest.mark.real_corpus,
+    pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="../shared/corpus/real is not beside the repository"),
+]
+
+
 def needs_real_corpus(test):
-    """A test over the real corpus: marked ``real_corpus`` (.ci/test-matrix's newest-release runs leave
-    those out) and skipped when ../shared/corpus/real is not beside the repository."""
-    skip = pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="../shared/corpus/real is not beside the repository")
-    return pytest.mark.real_corpus(skip(test))
+    """:data:`REAL_CORPUS_MARKS` on one test."""
+    for mark in REAL_CORPUS_MARKS:
+        test = mark(test)
+    return test
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:

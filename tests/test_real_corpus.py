@@ -7,14 +7,11 @@ import functools
 import pytest
 
 import edsconv
-from conftest import SHARED_REAL
+from conftest import REAL_CORPUS_MARKS, SHARED_REAL
 from edsconv.eds.syntax import EdsFile
 from edsconv.eds.writer import write
 
-pytestmark = [
-    pytest.mark.real_corpus,
-    pytest.mark.skipif(not SHARED_REAL.is_dir(), reason="shared real EDS corpus not present"),
-]
+pytestmark = REAL_CORPUS_MARKS
 
 FILES = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 

@@ -12,6 +12,8 @@ from edsconv.eds.syntax import EdsFile
 REPO = Path(__file__).resolve().parents[1]
 #: Real vendor EDS files, beside the repository (read-only, never copied in).
 SHARED_REAL = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "real"
+#: The real EDS files (any case of ``.eds``), sorted; empty when the corpus is not beside the repository.
+REAL_EDS = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 #: A test over the real corpus: marked ``real_corpus`` (.ci/test-matrix's newest-release runs leave those

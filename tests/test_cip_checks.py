@@ -11,7 +11,7 @@ import pytest
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv import cip_tables
 from edsconv.cip_tables import Known
 from edsconv.lint import lint_file
@@ -20,7 +20,6 @@ from edsconv.model.cip import Service
 from edsconv.model.cip_build import attach
 
 CORPUS = REPO / "corpus"
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 #: code -> (a file of ours that breaks the rule once, the file it was derived from, which does not)
 CASES = {
@@ -213,7 +212,7 @@ def test_the_typed_view_attaches_to_a_device_read_from_xml():
 
 @functools.cache
 def real_diagnostics() -> list:
-    return [d for path in REAL for d in lint_file(str(path)).diagnostics]
+    return [d for path in REAL_EDS for d in lint_file(str(path)).diagnostics]
 
 
 @needs_real_corpus

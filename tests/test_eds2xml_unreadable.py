@@ -9,7 +9,7 @@ from pathlib import Path
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv.diff import diff
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
@@ -26,7 +26,6 @@ UNREADABLE = (TEXT.replace("CreateDate = 11-22-2026;", "CreateDate = 22-11-2026;
                                    "    StrayWord\n")
               .replace("[Port]", "[Port]\n    Port8 = TCP, A, \"20 F5 24 01\", 8;\n"
                                  "    Port9 = TCP, \"B\", 20 F5 24 01, 9; $ kept\n"))
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 def profiles(device: Device) -> list[bytes]:
@@ -85,7 +84,7 @@ def test_an_unreadable_identity_is_still_refused():
 @needs_real_corpus
 def test_every_real_file_is_converted():
     refused = {}
-    for path in REAL:
+    for path in REAL_EDS:
         eds = edsconv.load(path)
         device = edsconv.build(eds)
         refusals = conversion_refusals(eds, device)

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from tests.conftest import REPO, SHARED_REAL, needs_real_corpus
+from tests.conftest import REAL_EDS, REPO, needs_real_corpus
 
 import edsconv
 from edsconv import spec_tables as tables
@@ -27,7 +27,6 @@ from edsconv.model.values import PathItem, StringIMember, to_real
 #: corpus/shall and corpus/allowed are one base file changed in one place each (test_shall_probes.py reads them).
 CORPUS = sorted(p for p in (REPO / "corpus").rglob("*")
                 if p.suffix.lower() == ".eds" and not {"shall", "allowed"} & set(p.parts))
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 def round_trip(device: Device) -> Device:
@@ -67,7 +66,7 @@ def test_device_to_eds_round_trips_the_corpus(path: Path) -> None:
 
 
 @needs_real_corpus
-@pytest.mark.parametrize("path", REAL, ids=lambda p: p.name[:60])
+@pytest.mark.parametrize("path", REAL_EDS, ids=lambda p: p.name[:60])
 def test_device_to_eds_round_trips_real_files(path: Path) -> None:
     assert_round_trip(path)
 
@@ -242,7 +241,7 @@ def test_canonical_keeps_content_corpus(path: Path) -> None:
 
 
 @needs_real_corpus
-@pytest.mark.parametrize("path", REAL, ids=lambda p: p.name[:60])
+@pytest.mark.parametrize("path", REAL_EDS, ids=lambda p: p.name[:60])
 def test_canonical_keeps_content_real(path: Path) -> None:
     check_canonical(path)
 

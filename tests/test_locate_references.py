@@ -6,14 +6,13 @@ from __future__ import annotations
 import pytest
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv.eds.locate import locate, value_end, word_at
 from edsconv.lsp import actions, navigation
 from edsconv.lsp.analysis import analyse
 from edsconv.model.references import occurrence_at, references_to
 
 EXAMPLE = (REPO / "corpus" / "examples" / "io_adapter.eds").read_text()
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 def apply(text: str, edits: list[tuple[tuple[int, int, int, int], str]]) -> str:
@@ -68,7 +67,7 @@ def test_references_cover_members_connections_groups_paths_and_paired_entries():
 
 
 @needs_real_corpus
-@pytest.mark.parametrize("path", REAL[::7], ids=lambda p: p.name[:60])
+@pytest.mark.parametrize("path", REAL_EDS[::7], ids=lambda p: p.name[:60])
 def test_every_span_of_a_real_file_spells_what_it_names(path):
     text = edsconv.eds.source.decode(path.read_bytes()).text
     analysis = analyse(text)

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, SHARED_REAL, needs_real_corpus
 from edsconv.lsp.analysis import Analysis, Superseded, analyse
 from edsconv.lsp.incremental import FULL_READ_EVERY, Carried, changed_lines
 from edsconv.model import Reference
@@ -486,17 +486,13 @@ def test_a_byte_order_mark_typed_at_the_start_is_read_whole():
     assert carried.splice == ""
 
 
-def real_files() -> list:
-    return sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
-
-
 @needs_real_corpus
-@pytest.mark.parametrize("index", range(len(real_files())))
+@pytest.mark.parametrize("index", range(len(REAL_EDS)))
 def test_edits_of_every_real_file_answer_as_a_fresh_analysis(index):
     # line ends, encodings and layouts as the vendors wrote them (CR LF files found the reader's
     # offsets counted apart from the editor's); `python tests/test_lsp_incremental.py SEED EDITS`
     # runs more of these edits on every file
-    text = real_files()[index].read_bytes().decode("latin-1")
+    text = REAL_EDS[index].read_bytes().decode("latin-1")
     carried = assert_incremental_is_exact(text, index, 2)
     assert_incremental_is_exact(text, index, 1, inside_a_line=False)
     assert carried.steps == 2
@@ -506,7 +502,7 @@ if __name__ == "__main__":  # the long run the test above samples: seed, then ed
     import sys
 
     seed, edits = (int(argument) for argument in sys.argv[1:3])
-    for number, path in enumerate(real_files()):
+    for number, path in enumerate(REAL_EDS):
         text = path.read_bytes().decode("latin-1")
         assert_incremental_is_exact(text, seed * 1000 + number, edits)
         assert_incremental_is_exact(text, seed * 1000 + number, max(edits // 4, 1), inside_a_line=False)

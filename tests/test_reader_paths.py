@@ -17,7 +17,7 @@ from hypothesis import example, given
 from hypothesis import strategies as st
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv.eds.reader import parse_with_lark
 from edsconv.eds.syntax import Comment, EdsFile, Entry, Field, Group, Scalar, Section, String, Unparsed
 from edsconv.eds.writer import write
@@ -28,7 +28,6 @@ PIECES = [*FRAGMENTS, "A = 1;", "B = {1,2};", "$x\n", '"b" "c"', ",,", " = ", "1
           '"a,b"', '"a;b"', "\x1c", "\x85", "C\n$ k = 1\n= 2;", "D $=\n\n="]
 
 OWN = sorted(p for p in (REPO / "corpus").rglob("*") if p.suffix.lower() == ".eds")
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 def _comments(comments: list[Comment]) -> list:
@@ -91,7 +90,7 @@ def test_own_corpus_reads_the_same_both_ways(path: Path):
 
 
 @needs_real_corpus
-@pytest.mark.parametrize("path", REAL, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", REAL_EDS, ids=lambda p: p.name)
 def test_real_corpus_reads_the_same_both_ways(path: Path):
     assert_same_reading(path.read_bytes())
 

@@ -7,13 +7,12 @@ import functools
 import pytest
 
 import edsconv
-from conftest import REAL_CORPUS_MARKS, SHARED_REAL
+from conftest import REAL_CORPUS_MARKS, REAL_EDS, SHARED_REAL
 from edsconv.eds.syntax import EdsFile
 from edsconv.eds.writer import write
 
 pytestmark = REAL_CORPUS_MARKS
 
-FILES = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 #: Files with error diagnostics: name -> [(code, line)], each checked by reading the file.
 #: A code may be a tuple of codes that are equally right for the fault.
@@ -32,18 +31,18 @@ def load(name: str) -> EdsFile:
 
 
 def test_corpus_is_there():
-    assert len(FILES) >= 50
-    assert set(BROKEN) <= {p.name for p in FILES}
+    assert len(REAL_EDS) >= 50
+    assert set(BROKEN) <= {p.name for p in REAL_EDS}
 
 
-@pytest.mark.parametrize("name", [p.name for p in FILES])
+@pytest.mark.parametrize("name", [p.name for p in REAL_EDS])
 def test_file_reads_and_round_trips(name):
     eds = load(name)
     assert eds.sections
     assert edsconv.parse(write(eds)) == eds
 
 
-@pytest.mark.parametrize("name", [p.name for p in FILES])
+@pytest.mark.parametrize("name", [p.name for p in REAL_EDS])
 def test_errors_are_exactly_the_expected_ones(name):
     errors = [(d.code, d.line) for d in load(name).diagnostics if d.severity.name == "ERROR"]
     expected = BROKEN.get(name, [])
@@ -54,23 +53,23 @@ def test_errors_are_exactly_the_expected_ones(name):
 
 def test_diagnostic_totals():
     totals: dict[str, int] = {}
-    for path in FILES:
+    for path in REAL_EDS:
         for diagnostic in load(path.name).diagnostics:
             totals[diagnostic.code] = totals.get(diagnostic.code, 0) + 1
-    clean = sum(1 for path in FILES if not load(path.name).has_errors)
-    assert clean == len(FILES) - len(BROKEN)
+    clean = sum(1 for path in REAL_EDS if not load(path.name).has_errors)
+    assert clean == len(REAL_EDS) - len(BROKEN)
     assert set(totals) <= {"EDS001", "EDS005", "EDS006", "EDS012"}
     assert totals.get("EDS001", 0) + totals.get("EDS012", 0) == 2
     assert totals["EDS005"] == 3
 
 
 def test_non_ascii_files_warn_with_a_line():
-    flagged = {path.name for path in FILES if any(d.code == "EDS005" for d in load(path.name).diagnostics)}
+    flagged = {path.name for path in REAL_EDS if any(d.code == "EDS005" for d in load(path.name).diagnostics)}
     for name in flagged:
         (warning,) = [d for d in load(name).diagnostics if d.code == "EDS005"]
         raw_line = (SHARED_REAL / name).read_bytes().split(b"\n")[warning.line - 1]
         assert any(byte > 0x7F for byte in raw_line)
-    for path in FILES:
+    for path in REAL_EDS:
         if path.name not in flagged:
             assert path.read_bytes().isascii(), path.name
 

@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv.diff import diff
 from edsconv.eds.from_model import device_to_eds
 from edsconv.eds.writer import write
@@ -34,7 +34,6 @@ from edsconv.xml.convert import profile_documents
 #: corpus/shall and corpus/allowed are one base file changed in one place each (test_shall_probes.py reads them).
 OWN = sorted(p for p in (REPO / "corpus").rglob("*")
              if p.suffix.lower() == ".eds" and not {"broken", "shall", "allowed"} & set(p.parts))
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 def round_trip(device: Device, stem: str = "x") -> Device:
@@ -62,7 +61,7 @@ def test_own_corpus_round_trips(path: Path):
 
 
 @needs_real_corpus
-@pytest.mark.parametrize("path", REAL, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", REAL_EDS, ids=lambda p: p.name)
 def test_real_corpus_round_trips(path: Path):
     assert_round_trips(path)
 

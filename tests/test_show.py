@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv.cli import cli
 from edsconv.cli.show import json_text, plain_text, render
 from edsconv.describe import SECTIONS, describe
@@ -25,7 +25,6 @@ EXAMPLE = REPO / "corpus" / "examples" / "io_adapter.eds"
 SPEC = sorted((REPO / "corpus" / "spec").glob("*.eds"))
 OWN = sorted((REPO / "corpus").rglob("*.eds"))
 BROKEN = sorted((REPO / "corpus" / "broken").glob("*.eds"))
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 def run(*args: str):
@@ -305,7 +304,7 @@ def test_every_spec_figure_describes_and_renders(path: Path):
 def test_real_corpus_describes_and_renders():
     from rich.console import Console
 
-    for path in REAL:
+    for path in REAL_EDS:
         described = document(path)
         json.dumps(described, allow_nan=False)
         if path.stat().st_size > 40_000:
@@ -331,7 +330,7 @@ def _rich_text(described: dict) -> str:
     return capture.get()
 
 
-@pytest.mark.parametrize("path", OWN + [p for p in REAL if p.stat().st_size <= 40_000],
+@pytest.mark.parametrize("path", OWN + [p for p in REAL_EDS if p.stat().st_size <= 40_000],
                          ids=lambda p: p.name)
 def test_piped_text_says_what_the_terminal_tables_say(path: Path):
     described = document(path)
@@ -352,7 +351,7 @@ def test_piped_text_lays_out_columns_and_rows_of_several_lines(example: dict):
 
 @needs_real_corpus
 def test_real_corpus_renders_as_piped_text():
-    for path in REAL:
+    for path in REAL_EDS:
         described = document(path)
         name = described["identity"]["product_name"]
         assert name is None or str(name).strip()[:10] in plain_text(described), path.name
@@ -373,7 +372,7 @@ def test_json_text_is_what_the_standard_library_writes(value):
     assert json_text(value) == json.dumps(value, indent=2, ensure_ascii=False)
 
 
-@pytest.mark.parametrize("path", OWN + REAL, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", OWN + REAL_EDS, ids=lambda p: p.name)
 def test_show_json_of_every_file_is_the_standard_librarys(path: Path):
     described = document(path)
     assert json_text(described) == json.dumps(described, indent=2, ensure_ascii=False)

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from conftest import REPO
+from conftest import REAL_EDS, REPO
 from edsconv.cli import cli
 from edsconv.xml.convert import device_from_profiles
 
@@ -67,14 +67,8 @@ def test_the_network_reader_alone_still_reads_a_network_profile(profiles: tuple[
     assert device is not None and "XML009" not in [d.code for d in diagnostics]
 
 
-def _real_files() -> list[Path]:
-    from conftest import SHARED_REAL
-
-    found = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
-    return found[:60:12]  # five real files of different vendors
-
-
-@pytest.mark.parametrize("eds", [*sorted((REPO / "corpus" / "examples").glob("*.eds")), *_real_files()],
+# and five real files of different vendors
+@pytest.mark.parametrize("eds", [*sorted((REPO / "corpus" / "examples").glob("*.eds")), *REAL_EDS[:60:12]],
                          ids=lambda path: path.name)
 def test_xml2eds_writes_what_fmt_check_accepts(tmp_path: Path, eds: Path) -> None:
     """Issue 18 item 15: the README promises "an EDS in canonical form"; fmt --check rejected it."""

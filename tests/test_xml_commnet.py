@@ -9,7 +9,7 @@ import pytest
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv.model import MODULE, Connection, Device, Port, Reference
 from edsconv.model.values import PathItem
 from edsconv.xml.commnet import commnet_profile, read_commnet_profile
@@ -17,7 +17,6 @@ from edsconv.xml.common import EDSCONV, Header, serialise
 
 CORPUS = sorted([REPO / "corpus" / "examples" / "io_adapter.eds", *(REPO / "corpus" / "spec").glob("*.eds"),
                  *(REPO / "corpus" / "modular").glob("*.eds")])
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 EDSCONV_PREFIX = {"e": EDSCONV[1:-1]}
 
 
@@ -54,9 +53,9 @@ def test_corpus_round_trip(path):
 
 @needs_real_corpus
 def test_real_corpus_round_trip():
-    assert len(REAL) >= 50
+    assert len(REAL_EDS) >= 50
     failures = []
-    for path in REAL:
+    for path in REAL_EDS:
         try:
             assert_round_trip(built(path))
         except Exception as error:  # collect every file, report them together

@@ -8,7 +8,7 @@ import pytest
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL, needs_real_corpus
+from conftest import REAL_EDS, REPO, needs_real_corpus
 from edsconv.model import MODULE, Device, Reference
 from edsconv.model.values import PathItem, Revision
 from edsconv.xml.common import EDSCONV, Header, serialise
@@ -18,7 +18,6 @@ from edsconv.xml.safe import parse_xml
 
 CORPUS = [REPO / "corpus" / "examples" / "io_adapter.eds", *sorted((REPO / "corpus" / "spec").glob("*.eds")),
           *sorted((REPO / "corpus" / "modular").glob("*.eds"))]
-REAL = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 
 
 def round_trip(device: Device) -> tuple[Device, bytes, list]:
@@ -49,7 +48,7 @@ def test_corpus_round_trip(path):
 
 
 @needs_real_corpus
-@pytest.mark.parametrize("path", REAL, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", REAL_EDS, ids=lambda p: p.name)
 def test_real_round_trip(path):
     assert_round_trip(edsconv.build(edsconv.load(path)))
 

@@ -24,7 +24,7 @@ import xmlschema
 from lxml import etree
 
 import edsconv
-from conftest import REPO, SHARED_REAL
+from conftest import REAL_EDS, REPO
 from edsconv.resources import data_dir
 from edsconv.xml.commnet import commnet_profile
 from edsconv.xml.common import Header, InvalidProfile, serialise
@@ -35,7 +35,6 @@ CORPUS_XML = REPO / "corpus" / "xml"
 RENDERED = [kind for kind in PROFILE_KINDS if kind.xsd_version == "1.1"]
 VALIDATED = [kind for kind in PROFILE_KINDS if kind.xsd]
 OWN_EDS = sorted(p for p in (REPO / "corpus").rglob("*.eds") if "broken" not in p.parts)
-REAL_EDS = sorted(p for p in SHARED_REAL.glob("*") if p.suffix.lower() == ".eds") if SHARED_REAL.is_dir() else []
 FOREIGN = "urn:x-test:extension"
 
 
